@@ -1,0 +1,43 @@
+"""lagrange — derive Lagrange's equations symbolically (the way D. A. Wells does) and solve them fast.
+
+Public API (explicit re-exports only). Conventions: :mod:`lagrange.conventions`.
+"""
+
+from .conventions import t
+from .errors import (
+    BackendError,
+    DeclarationError,
+    InitialConditionError,
+    IntegrationError,
+    LagrangeError,
+    ParameterError,
+    SingularMassMatrixError,
+    SpecError,
+)
+from .model.bodies import Force, Particle
+from .model.coordinates import coordinates, delta, parameters
+from .model.system import System
+from .printing import latex, pretty
+
+__version__ = "0.1.0"
+
+__all__ = [
+    "t",
+    "coordinates",
+    "parameters",
+    "delta",
+    "System",
+    "Particle",
+    "Force",
+    "latex",
+    "pretty",
+    "LagrangeError",
+    "DeclarationError",
+    "ParameterError",
+    "InitialConditionError",
+    "SingularMassMatrixError",
+    "IntegrationError",
+    "SpecError",
+    "BackendError",
+    "__version__",
+]

@@ -1,0 +1,1 @@
+"""Code generation: Equations -> NumericModel (python, numba, reference backends)."""

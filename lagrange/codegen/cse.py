@@ -1,0 +1,61 @@
+"""One joint common-subexpression elimination over (upper triangle of M, f), and the symbol renaming
+used by every generated-code backend.
+
+Generated code sees the state as ``y0 .. y{2n-1}`` (positions then velocities), parameters as
+``p0 .. p{k-1}`` and temporaries as ``c0, c1, …`` — unique names, so sympy's CSE/assumption pitfalls
+(sympy#25043) cannot bite.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import sympy as sp
+
+from ..conventions import t
+from ..derive.equations import Equations
+
+__all__ = ["FusedExpressions", "fuse", "rename_map"]
+
+
+def rename_map(eqs: Equations) -> dict:
+    """Plain symbols of the derivation → generated-code names (``y0..``, ``p0..``, ``t``)."""
+    n = eqs.n
+    m = {s: sp.Symbol(f"y{i}", real=True) for i, s in enumerate(eqs.q)}
+    m.update({s: sp.Symbol(f"y{n + i}", real=True) for i, s in enumerate(eqs.qd)})
+    m.update({s: sp.Symbol(f"p{k}", real=True) for k, s in enumerate(eqs.parameters)})
+    m[t] = sp.Symbol("t", real=True)
+    return m
+
+
+@dataclass(frozen=True)
+class FusedExpressions:
+    """CSE'd ``M`` (upper triangle, row-major) and ``f`` in generated-code names."""
+
+    n: int
+    temporaries: tuple  # ((Symbol, expr), ...)
+    mass_upper: dict  # {(i, j): expr} for i <= j, structural zeros omitted
+    forcing: tuple  # n expressions
+
+
+def fuse(eqs: Equations, *, extra: tuple = ()) -> tuple[FusedExpressions, tuple]:
+    """Run one CSE over M's upper triangle, f and ``extra`` expressions.
+
+    Floats are introduced here only: exact rationals stay exact until printed.
+    Returns the fused expressions and the CSE'd ``extra`` expressions.
+    """
+    n = eqs.n
+    ren = rename_map(eqs)
+    idx = [(i, j) for i in range(n) for j in range(i, n) if eqs.mass_matrix[i, j] != 0]
+    exprs = [eqs.mass_matrix[i, j].xreplace(ren) for i, j in idx]
+    exprs += [e.xreplace(ren) for e in eqs.forcing]
+    exprs += [sp.sympify(e).xreplace(ren) for e in extra]
+    repl, red = sp.cse(exprs, symbols=sp.numbered_symbols("c", real=True), optimizations="basic")
+    k = len(idx)
+    fused = FusedExpressions(
+        n=n,
+        temporaries=tuple(repl),
+        mass_upper={ij: e for ij, e in zip(idx, red[:k])},
+        forcing=tuple(red[k : k + n]),
+    )
+    return fused, tuple(red[k + n :])

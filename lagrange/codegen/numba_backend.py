@@ -1,0 +1,59 @@
+"""The compiled backend: the generated source under ``numba.njit(cache=True)``.
+
+The source is written as a real module file in the cache directory, named by a hash of its text (and
+the numba and Python versions), so numba's on-disk cache is valid exactly when the model is: a re-run
+with the same model skips the JIT, a changed model gets a new file. Numba is optional
+(``pip install lagrange[fast]``); a clear :class:`~lagrange.errors.BackendError` says so when it is
+missing.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import importlib.util
+import os
+import sys
+import tempfile
+from collections.abc import Callable
+from pathlib import Path
+
+from ..errors import BackendError
+
+__all__ = ["numba_rhs", "cache_dir"]
+
+_HEADER = "import math\nimport numpy as np\nimport numba\n\n\n"
+_DECORATOR = "@numba.njit(cache=True, error_model='python')\n"
+
+
+def cache_dir() -> Path:
+    """``$LAGRANGE_CACHE_DIR``, else ``~/.cache/lagrange`` (created on demand)."""
+    root = os.environ.get("LAGRANGE_CACHE_DIR") or os.path.join(Path.home(), ".cache", "lagrange")
+    path = Path(root)
+    path.mkdir(parents=True, exist_ok=True)
+    return path
+
+
+def numba_rhs(source: str) -> Callable:
+    try:
+        import numba
+    except ImportError as exc:  # pragma: no cover - exercised when numba is absent
+        raise BackendError(
+            "backend='numba' needs numba: install it with `pip install lagrange[fast]` "
+            "or use backend='python'"
+        ) from exc
+    text = _HEADER + _DECORATOR + source
+    key = hashlib.sha256(
+        (text + numba.__version__ + sys.version).encode()
+    ).hexdigest()[:24]
+    path = cache_dir() / f"rhs_{key}.py"
+    if not path.exists() or path.read_text() != text:
+        # atomic write: concurrent writers never leave a truncated module behind
+        fd, tmp = tempfile.mkstemp(dir=path.parent, suffix=".tmp")
+        with os.fdopen(fd, "w") as fh:
+            fh.write(text)
+        os.replace(tmp, path)
+    spec = importlib.util.spec_from_file_location(f"lagrange_rhs_{key}", path)
+    module = importlib.util.module_from_spec(spec)
+    assert spec.loader is not None
+    spec.loader.exec_module(module)
+    return module.rhs

@@ -1,0 +1,72 @@
+"""A worked problem of the book: its system, the book's answers, the citation and any correction."""
+
+from __future__ import annotations
+
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass, field
+
+from .answers import Answer
+from .compare import Mismatch
+
+__all__ = ["Problem", "Simulation", "CheckResult"]
+
+
+@dataclass(frozen=True)
+class Simulation:
+    """Default numbers for ``lagrange simulate ID``: parameter values, initial state, end time."""
+
+    params: Mapping
+    initial: Mapping
+    t_end: float
+    options: Mapping = field(default_factory=dict)
+
+
+@dataclass(frozen=True)
+class CheckResult:
+    problem: str
+    answer: str
+    ok: bool
+    detail: str = ""
+
+
+@dataclass(frozen=True)
+class Problem:
+    """One worked example or problem of Wells' *Lagrangian Dynamics*.
+
+    Attributes
+    ----------
+    id : str — e.g. ``"ex3.2"`` (worked example), ``"p3.7"`` (problem), ``"sec1.9"``, ``"eq2.41"``
+    title : one line
+    chapter : int
+    source : citation, e.g. ``"Wells, Example 3.2"``
+    system : the System in the book's coordinates
+    answers : the book's answers (after documented corrections)
+    correction : "" or the misprint, the corrected form and why it is right
+    units : units of the numbers (Wells is unit-agnostic; Sec. 1.9 uses CGS)
+    simulation : default numbers for ``lagrange simulate`` (None: no dynamics to simulate)
+    ranges : sampling ranges ``{symbol name: (lo, hi)}`` for numeric comparison where the default
+        (parameters in [1.1, 2.3], coordinates and velocities in [0.15, 0.85]) leaves the domain
+    """
+
+    id: str
+    title: str
+    chapter: int
+    source: str
+    system: object
+    answers: Sequence[Answer]
+    correction: str = ""
+    units: str = "any consistent units"
+    simulation: Simulation | None = None
+    ranges: Mapping = field(default_factory=dict)
+    tags: Sequence[str] = ()
+
+    def check(self) -> list[CheckResult]:
+        """Check every answer; never raises for a mismatch (it is reported)."""
+        out = []
+        for a in self.answers:
+            try:
+                a.check(self.system, self.ranges)
+                out.append(CheckResult(self.id, a.description, True))
+            except Mismatch as exc:
+                out.append(CheckResult(self.id, a.description, False, str(exc)))
+        return out

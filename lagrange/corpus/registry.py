@@ -1,0 +1,63 @@
+"""Discovery of the problem corpus (the ``problems/`` folder, installed as ``lagrange_problems``).
+
+Each module of the corpus defines ``PROBLEM`` (one :class:`~lagrange.corpus.Problem`) or ``PROBLEMS``
+(a list, for variants of one book problem).
+"""
+
+from __future__ import annotations
+
+import importlib
+import pkgutil
+import re
+from functools import lru_cache
+
+from ..errors import SpecError
+from .problem import Problem
+
+__all__ = ["all_problems", "get_problem", "problem_ids", "PACKAGE"]
+
+PACKAGE = "lagrange_problems"
+
+
+def _sort_key(p: Problem):
+    nums = [int(x) for x in re.findall(r"\d+", p.id)]
+    return (p.chapter, nums, p.id)
+
+
+@lru_cache(maxsize=1)
+def all_problems() -> tuple[Problem, ...]:
+    """Every problem of the corpus, by chapter and number."""
+    try:
+        pkg = importlib.import_module(PACKAGE)
+    except ImportError as exc:  # pragma: no cover - broken installation
+        raise SpecError(f"the problem corpus ({PACKAGE}) is not installed: reinstall lagrange") from exc
+    found: dict[str, Problem] = {}
+    for info in pkgutil.iter_modules(pkg.__path__):
+        if info.name.startswith("_"):
+            continue
+        mod = importlib.import_module(f"{PACKAGE}.{info.name}")
+        probs = getattr(mod, "PROBLEMS", None) or [getattr(mod, "PROBLEM", None)]
+        for p in probs:
+            if not isinstance(p, Problem):
+                raise SpecError(f"corpus module {info.name} defines no PROBLEM")
+            if p.id in found:
+                raise SpecError(f"problem id {p.id!r} is defined twice (in {info.name})")
+            found[p.id] = p
+    return tuple(sorted(found.values(), key=_sort_key))
+
+
+def problem_ids() -> list[str]:
+    return [p.id for p in all_problems()]
+
+
+def get_problem(problem_id: str) -> Problem:
+    """The problem with this id (case-insensitive); a SpecError suggests close ids otherwise."""
+    key = problem_id.strip().lower()
+    for p in all_problems():
+        if p.id.lower() == key:
+            return p
+    import difflib
+
+    close = difflib.get_close_matches(key, [p.id for p in all_problems()], n=5)
+    hint = f"; did you mean {', '.join(close)}?" if close else "; run `lagrange problems` for the list"
+    raise SpecError(f"no problem with id {problem_id!r}{hint}")

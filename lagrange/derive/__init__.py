@@ -1,0 +1,1 @@
+"""Pure functions from a System to its equations."""

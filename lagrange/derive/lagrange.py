@@ -1,0 +1,197 @@
+r"""Lagrange's equations the way Wells derives them — pure functions of a :class:`~lagrange.System`.
+
+For each coordinate (Wells 4.9, 5.10, 6.10)
+
+.. math::
+
+    \underbrace{\sum_j M_{rj}\ddot q_j + \sum_j \frac{\partial^2 T}{\partial\dot q_r\partial q_j}\dot q_j
+    + \frac{\partial^2 T}{\partial\dot q_r\partial t} - \frac{\partial T}{\partial q_r}}_{
+    \frac{d}{dt}\frac{\partial T}{\partial\dot q_r}-\frac{\partial T}{\partial q_r}}
+    + \frac{\partial V}{\partial q_r} = F_{q_r} + \frac{\partial P}{\partial\dot q_r}
+    - \frac{\partial D}{\partial\dot q_r},
+    \qquad M_{rj} = \frac{\partial^2 T}{\partial\dot q_r\,\partial\dot q_j}.
+
+The total time derivative is expanded by the chain rule on plain symbols, so no unevaluated
+derivatives reach code generation; nothing is inverted symbolically and nothing is ``simplify``-ed on
+this path (see ``reference/numerics.md``: symbolic inversion and simplify blow up beyond 2–3 DOF).
+"""
+
+from __future__ import annotations
+
+import sympy as sp
+
+from ..conventions import POWER_FUNCTION_SIGN, RAYLEIGH_SIGN, t
+from ..model.coordinates import (
+    acceleration_symbol,
+    position_symbol,
+    to_functions,
+    to_symbols,
+    velocity_symbol,
+)
+from .equations import Equations
+
+__all__ = [
+    "lagrange_equations",
+    "book_form",
+    "energy_split",
+    "ignorable_coordinates",
+    "is_zero",
+]
+
+
+def lagrange_equations(system) -> Equations:
+    """Derive ``M q̈ = f`` for ``system``.
+
+    Preconditions (checked by :class:`~lagrange.System` on construction): T, P, D and forces depend on
+    coordinates, velocities, t and parameters only; V has no velocities; nothing has accelerations.
+
+    Returns
+    -------
+    Equations
+        Frozen; ``mass_matrix`` is symmetric by construction (only the upper triangle is derived).
+    """
+    coords = system.coordinates
+    q = tuple(position_symbol(c) for c in coords)
+    qd = tuple(velocity_symbol(c) for c in coords)
+    qdd = tuple(acceleration_symbol(c) for c in coords)
+    n = len(q)
+
+    T = _tidy_kinetic(to_symbols(system.T, coords))
+    V = to_symbols(system.V, coords)
+    P = to_symbols(system.P, coords)
+    D = to_symbols(system.rayleigh, coords)
+    F = [to_symbols(system.forces[c], coords) for c in coords]
+
+    dT_dqd = [sp.diff(T, v) for v in qd]
+    M = sp.zeros(n, n)
+    for i in range(n):
+        for j in range(i, n):
+            M[i, j] = M[j, i] = sp.diff(dT_dqd[i], qd[j])
+    inertial = []
+    forcing = []
+    potential_gradient = []
+    dissipative = []
+    for i in range(n):
+        # d/dt(dT/dqd_i) without the qdd part, minus dT/dq_i
+        convective = sum((sp.diff(dT_dqd[i], q[j]) * qd[j] for j in range(n)), sp.S.Zero)
+        convective += sp.diff(dT_dqd[i], t) - sp.diff(T, q[i])
+        inertial.append(sum((M[i, j] * qdd[j] for j in range(n)), sp.S.Zero) + convective)
+        dV = sp.diff(V, q[i])
+        potential_gradient.append(dV)
+        diss = POWER_FUNCTION_SIGN * sp.diff(P, qd[i]) + RAYLEIGH_SIGN * sp.diff(D, qd[i])
+        dissipative.append(diss)
+        forcing.append(F[i] + diss - convective - dV)
+
+    nonconservative = tuple(F[i] + dissipative[i] for i in range(n))
+    L = T - V
+    jacobi = sum((v * d for v, d in zip(qd, dT_dqd)), sp.S.Zero) - L
+    jacobi_rate = -sp.diff(L, t) + sum((v * Q for v, Q in zip(qd, nonconservative)), sp.S.Zero)
+
+    internal = set(q) | set(qd) | set(qdd) | {t}
+    everything = [T, V, P, D, *F]
+    params = set().union(*(e.free_symbols for e in everything)) - internal
+    return Equations(
+        coordinates=tuple(coords),
+        q=q,
+        qd=qd,
+        qdd=qdd,
+        parameters=tuple(sorted(params, key=lambda s: s.name)),
+        mass_matrix=sp.ImmutableMatrix(M),
+        forcing=sp.ImmutableMatrix(forcing),
+        inertial=tuple(inertial),
+        potential_gradient=tuple(potential_gradient),
+        applied=tuple(F),
+        dissipative=tuple(dissipative),
+        nonconservative=nonconservative,
+        kinetic=T,
+        potential=V,
+        power_function=P,
+        rayleigh=D,
+        jacobi=jacobi,
+        jacobi_rate=jacobi_rate,
+        name=system.name,
+    )
+
+
+_TIDY_LIMIT = 400
+_KINETIC_LIMIT = 250
+
+
+def _tidy_kinetic(T):
+    """Expand and trig-simplify a small T (sin² + cos² = 1), so M and f stay compact and readable.
+
+    Bounded: a T above ``_KINETIC_LIMIT`` operations is left as it is (no simplify on big systems).
+    """
+    if sp.count_ops(T) > _KINETIC_LIMIT:
+        return T
+    e = sp.expand(T)
+    if e.has(sp.sin, sp.cos):
+        e = sp.trigsimp(e)
+    return sp.expand(e) if sp.count_ops(e) <= sp.count_ops(T) else T
+
+
+def _tidy(expr, collect_in=()):
+    """Light, bounded tidying for display: collect in velocities, factor common terms."""
+    if expr == 0:
+        return expr
+    if sp.count_ops(expr) > _TIDY_LIMIT:
+        return expr
+    e = sp.expand(expr)
+    if collect_in:
+        e = sp.collect(e, list(collect_in))
+    return sp.factor_terms(e)
+
+
+def book_form(eqs: Equations) -> list[sp.Eq]:
+    r"""Wells' printed form per coordinate, in the coordinate functions.
+
+    Left: ``Σ_j M_rj q̈_j + (rest of d/dt ∂T/∂q̇ − ∂T/∂q) + ∂V/∂q``; right: ``F_q + ∂P/∂q̇ − ∂D/∂q̇``.
+    """
+    out = []
+    n = eqs.n
+    for i in range(n):
+        acc = sum(
+            (_tidy(eqs.mass_matrix[i, j]) * eqs.qdd[j] for j in range(n) if eqs.mass_matrix[i, j] != 0),
+            sp.S.Zero,
+        )
+        rest = eqs.inertial[i] - sum((eqs.mass_matrix[i, j] * eqs.qdd[j] for j in range(n)), sp.S.Zero)
+        lhs = acc + _tidy(rest + eqs.potential_gradient[i], eqs.qd)
+        rhs = _tidy(eqs.nonconservative[i], eqs.qd)
+        out.append(sp.Eq(to_functions(lhs, eqs.coordinates), to_functions(rhs, eqs.coordinates)))
+    return out
+
+
+def energy_split(system) -> tuple:
+    """Wells (2.54)–(2.56): ``T = Σ_kl A_kl q̇_k q̇_l + Σ_k B_k q̇_k + C`` with A containing the 1/2."""
+    eqs = system.derived
+    T = eqs.kinetic
+    zero = {v: 0 for v in eqs.qd}
+    A = sp.Matrix(eqs.mass_matrix) / 2
+    B = sp.Matrix([sp.diff(T, v).subs(zero) for v in eqs.qd])
+    C = T.subs(zero)
+    c = eqs.coordinates
+    return to_functions(A, c), to_functions(B, c), to_functions(C, c)
+
+
+def is_zero(expr, *, limit: int = 300) -> bool:
+    """True when ``expr`` is identically zero (structural test, then bounded ``simplify``)."""
+    expr = sp.sympify(expr)
+    if expr == 0:
+        return True
+    if sp.count_ops(expr) > limit:
+        return False
+    return sp.simplify(expr) == 0
+
+
+def ignorable_coordinates(system) -> dict:
+    """``{q: p_q}`` for coordinates absent from L with no generalized force (Wells 3.3, 5.15).
+
+    ``p_q = ∂L/∂q̇`` is then a constant of the motion.
+    """
+    eqs = system.derived
+    L = eqs.kinetic - eqs.potential
+    out = {}
+    for i, c in enumerate(eqs.coordinates):
+        if is_zero(sp.diff(L, eqs.q[i])) and is_zero(eqs.nonconservative[i]):
+            out[c] = to_functions(sp.diff(L, eqs.qd[i]), eqs.coordinates)
+    return out

@@ -1,0 +1,73 @@
+"""Exceptions raised by :mod:`lagrange`.
+
+Every exception subclasses :class:`LagrangeError` and the matching builtin, and its message names the
+object at fault, the rule broken and how to fix it. Declarations are validated completely and all
+problems are reported at once.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+
+class LagrangeError(Exception):
+    """Base class of every error raised on purpose by lagrange."""
+
+
+class DeclarationError(LagrangeError, ValueError):
+    """A declared system (coordinates, energies, forces, bodies) is invalid.
+
+    ``problems`` lists every rule that was broken; the message joins them.
+    """
+
+    def __init__(self, problems: Sequence[str] | str, *, subject: str = "system"):
+        if isinstance(problems, str):
+            problems = [problems]
+        self.problems = tuple(problems)
+        if len(self.problems) == 1:
+            msg = f"invalid {subject}: {self.problems[0]}"
+        else:
+            lines = "\n".join(f"  - {p}" for p in self.problems)
+            msg = f"invalid {subject} ({len(self.problems)} problems):\n{lines}"
+        super().__init__(msg)
+
+
+class ParameterError(LagrangeError, ValueError):
+    """Parameter values are missing, unknown or not finite numbers."""
+
+
+class InitialConditionError(LagrangeError, ValueError):
+    """Initial conditions are missing, unknown or not finite."""
+
+
+class SingularMassMatrixError(LagrangeError, ValueError):
+    """The mass matrix is singular (or numerically so) at a state."""
+
+
+class IntegrationError(LagrangeError, RuntimeError):
+    """Numerical integration failed; the message gives the time, the state and the likely cause."""
+
+    def __init__(self, message: str, *, t: float | None = None, state: dict | None = None):
+        self.t = t
+        self.state = state
+        super().__init__(message)
+
+
+class SpecError(LagrangeError, ValueError):
+    """A spec (problem id, Python file or TOML file) cannot be loaded."""
+
+
+class BackendError(LagrangeError, RuntimeError):
+    """A code-generation backend is unavailable or failed."""
+
+
+__all__ = [
+    "LagrangeError",
+    "DeclarationError",
+    "ParameterError",
+    "InitialConditionError",
+    "SingularMassMatrixError",
+    "IntegrationError",
+    "SpecError",
+    "BackendError",
+]

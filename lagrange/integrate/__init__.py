@@ -1,0 +1,1 @@
+"""Integration of numeric models: scipy's methods, switching (friction), the simulate driver."""

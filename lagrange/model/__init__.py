@@ -1,0 +1,1 @@
+"""What users declare: coordinates, parameters, bodies, forces and the System."""

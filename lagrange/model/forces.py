@@ -1,0 +1,113 @@
+r"""Generalized forces from the three forms Wells uses.
+
+1. A mapping ``{q: F_q}`` given directly.
+2. Cartesian forces applied at points (:class:`~lagrange.model.bodies.Force`), Wells (4.10):
+
+   .. math:: F_{q_r} = \sum_i \Big(F_{x_i}\frac{\partial x_i}{\partial q_r}
+             + F_{y_i}\frac{\partial y_i}{\partial q_r} + F_{z_i}\frac{\partial z_i}{\partial q_r}\Big)
+
+   with t and the other coordinates held fixed.
+3. A virtual-work expression :math:`\delta W = \sum_r F_{q_r}\,\delta q_r` (Wells 4.12) written with
+   :func:`~lagrange.model.coordinates.delta` or the ``delta_q`` symbols: the coefficients are the F_q.
+
+The three forms may be combined in a list; contributions add.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping, Sequence
+
+import sympy as sp
+
+from .bodies import Force
+from .coordinates import (
+    coordinate_name,
+    is_coordinate,
+    to_functions,
+    to_symbols,
+    virtual_displacement,
+)
+
+__all__ = ["generalized_forces"]
+
+
+def _from_force(force: Force, coords: Sequence) -> dict:
+    if force.at.atoms(sp.Derivative):
+        label = force.name or tuple(force.vector)
+        raise ValueError(f"the point of application of force {label} contains velocities")
+    pos = to_symbols(force.at, coords)
+    out = {}
+    for q in coords:
+        jac = to_functions(pos.diff(to_symbols(q, coords)), coords)
+        out[q] = (force.vector.T * jac)[0, 0]
+    return out
+
+
+def _from_virtual_work(expr, coords: Sequence, problems: list) -> dict:
+    expr = sp.expand(sp.sympify(expr))
+    deltas = {virtual_displacement(q): q for q in coords}
+    stray = sorted(
+        str(s) for s in expr.free_symbols if s.name.startswith("delta_") and s not in deltas
+    )
+    if stray:
+        problems.append(
+            f"virtual work contains {', '.join(stray)}, which are not virtual displacements of the "
+            f"coordinates ({', '.join(coordinate_name(q) for q in coords)}); use delta() of the "
+            "transformation equations instead"
+        )
+        return {}
+    out = {}
+    for d, q in deltas.items():
+        out[q] = expr.coeff(d)
+    rest = sp.expand(expr - sum(out[q] * d for d, q in deltas.items()))
+    if rest != 0:
+        problems.append(
+            f"virtual work has a term without a virtual displacement: {rest}; every term of δW must be "
+            "a force times some delta_q"
+        )
+    if any(sp.sympify(c).free_symbols & set(deltas) for c in out.values()):
+        problems.append("virtual work is not linear in the virtual displacements")
+    return out
+
+
+def generalized_forces(forces, coords: Sequence, problems: list) -> dict:
+    """Normalize ``forces`` to ``{q: F_q}`` over ``coords`` (missing entries are 0).
+
+    Problems found are appended to ``problems`` (validation collects and raises once).
+    """
+    total = {q: sp.S.Zero for q in coords}
+    if forces is None:
+        return total
+    items = forces if isinstance(forces, (list, tuple)) else [forces]
+    for item in items:
+        if isinstance(item, Mapping):
+            for key, value in item.items():
+                q = key
+                if isinstance(key, str):
+                    match = [c for c in coords if coordinate_name(c) == key]
+                    q = match[0] if match else None
+                if q is None or not is_coordinate(q) or q not in total:
+                    problems.append(
+                        f"generalized force given for {key!r}, which is not a coordinate of this system "
+                        f"({', '.join(coordinate_name(c) for c in coords)})"
+                    )
+                    continue
+                total[q] += sp.sympify(value)
+        elif isinstance(item, Force):
+            try:
+                for q, v in _from_force(item, coords).items():
+                    total[q] += v
+            except ValueError as exc:
+                problems.append(str(exc))
+        else:
+            try:
+                expr = sp.sympify(item)
+            except (sp.SympifyError, TypeError):
+                problems.append(
+                    f"cannot read {item!r} as forces: give a dict {{q: F_q}}, lagrange.Force(at, vector) "
+                    "objects or a virtual-work expression"
+                )
+                continue
+            for q, v in _from_virtual_work(expr, coords, problems).items():
+                total[q] += v
+    return total

@@ -1,0 +1,381 @@
+"""The declared mechanical system: coordinates, energies, power function, forces and bodies.
+
+A :class:`System` is immutable and validated completely on construction: every problem found is
+reported at once in one :class:`~lagrange.errors.DeclarationError`. Derived results (equations,
+mass matrix, …) come from the pure functions in :mod:`lagrange.derive`; the methods here are thin,
+memoized conveniences over them (safe because a System never changes).
+
+Sign conventions are those of :mod:`lagrange.conventions` (Wells' power function ``F = +∂P/∂q̇``).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping, Sequence
+from functools import cached_property
+from typing import TYPE_CHECKING, Any
+
+import sympy as sp
+from sympy.core.function import AppliedUndef
+
+from ..conventions import VELOCITY_SUFFIX, t
+from ..errors import DeclarationError
+from .bodies import Body
+from .coordinates import coordinate_name, is_coordinate
+from .forces import generalized_forces
+
+if TYPE_CHECKING:
+    from ..codegen.numeric import NumericModel
+    from ..derive.equations import Equations
+    from ..results.trajectory import Trajectory
+
+__all__ = ["System"]
+
+
+def _as_coordinate_tuple(coords) -> tuple:
+    if is_coordinate(coords) or isinstance(coords, sp.Basic):
+        return (coords,)
+    try:
+        return tuple(coords)
+    except TypeError:
+        return (coords,)
+
+
+def _sym(expr, what: str, problems: list):
+    try:
+        return sp.sympify(expr)
+    except (sp.SympifyError, TypeError, SyntaxError):
+        problems.append(f"{what} = {expr!r} is not a sympy expression")
+        return sp.S.Zero
+
+
+class System:
+    """A mechanical system declared the way Wells does.
+
+    Parameters
+    ----------
+    coordinates : sequence of coordinate functions (from :func:`lagrange.coordinates`)
+        The generalized coordinates, in the order used for equations and states.
+    T : expression, optional
+        Kinetic energy in the coordinate functions, their derivatives and ``t``. Added to the kinetic
+        energy of ``bodies`` when both are given.
+    V : expression
+        Potential energy V(q, t). No velocities.
+    P : expression
+        Wells' power function; generalized force ``+∂P/∂q̇`` (P < 0 for losses).
+    rayleigh : expression
+        Positive Rayleigh dissipation function D; generalized force ``-∂D/∂q̇``.
+    forces : dict, Force, virtual-work expression, or a list of these
+        Generalized forces of everything not in V, P or D (see :mod:`lagrange.model.forces`).
+    bodies : sequence of bodies (:class:`~lagrange.Particle`, …)
+        Their kinetic energy is computed from their transformation equations.
+    name : str, optional
+    parameters : sequence of symbols, optional
+        When given, any other symbol in the declaration is an error (strict mode).
+    prescribed : dict ``{q(t): expression of t}``, optional
+        Coordinates whose motion is prescribed (Wells Ex. 4.9): they are substituted everywhere and are
+        not degrees of freedom.
+
+    Raises
+    ------
+    DeclarationError
+        Listing every problem: unknown functions of t, velocities in V, accelerations anywhere,
+        symbols clashing with coordinate names, a symbol named ``t`` that is not ``lagrange.t``,
+        symbols outside ``parameters``, forces on unknown coordinates, no kinetic energy.
+
+    Examples
+    --------
+    >>> from lagrange import System, coordinates, parameters, t
+    >>> import sympy as sp
+    >>> x = coordinates("x"); m, k = parameters("m k")
+    >>> s = System([x], T=m*x.diff(t)**2/2, V=k*x**2/2)
+    >>> s.equations()[0]
+    Eq(k*x(t) + m*Derivative(x(t), (t, 2)), 0)
+    """
+
+    def __init__(
+        self,
+        coordinates,
+        T=None,
+        V=0,
+        P=0,
+        rayleigh=0,
+        forces=None,
+        bodies: Sequence[Body] = (),
+        name: str | None = None,
+        *,
+        parameters: Sequence[sp.Symbol] | None = None,
+        prescribed: Mapping | None = None,
+        description: str = "",
+    ):
+        problems: list[str] = []
+        coords = _as_coordinate_tuple(coordinates)
+        bad = [c for c in coords if not is_coordinate(c)]
+        for c in bad:
+            problems.append(
+                f"{c!r} is not a coordinate: declare coordinates with lagrange.coordinates('q1 q2'), "
+                "which gives functions of lagrange.t"
+            )
+        coords = tuple(c for c in coords if is_coordinate(c))
+        if not coords and not bad:
+            problems.append("no coordinates given")
+        names = [coordinate_name(c) for c in coords]
+        dups = sorted({n for n in names if names.count(n) > 1})
+        if dups:
+            problems.append(f"coordinate(s) {', '.join(dups)} listed more than once")
+
+        prescribed = dict(prescribed or {})
+        presc: dict = {}
+        for key, value in prescribed.items():
+            if not is_coordinate(key):
+                problems.append(f"prescribed motion given for {key!r}, which is not a function of t")
+                continue
+            if key in coords:
+                problems.append(
+                    f"{coordinate_name(key)} is both a coordinate and prescribed: a prescribed "
+                    "coordinate is not a degree of freedom, remove it from the coordinates"
+                )
+                continue
+            val = _sym(value, f"prescribed {coordinate_name(key)}", problems)
+            if val.atoms(AppliedUndef):
+                problems.append(
+                    f"prescribed motion of {coordinate_name(key)} = {val} must be a function of t and "
+                    "parameters only"
+                )
+                continue
+            presc[key] = val
+
+        def prep(expr, what):
+            e = _sym(expr, what, problems)
+            if presc:
+                e = e.subs(presc).doit()
+            return e
+
+        bodies = tuple(bodies)
+        for b in bodies:
+            if not isinstance(b, Body):
+                problems.append(f"{b!r} in bodies is not a body (Particle, RigidBody)")
+        bodies = tuple(b for b in bodies if isinstance(b, Body))
+        if T is None and not bodies:
+            problems.append("no kinetic energy: give T or bodies (e.g. Particle(m, (x, y)))")
+        T_total = prep(0 if T is None else T, "T")
+        for b in bodies:
+            T_total += prep(b.kinetic_energy(), f"kinetic energy of {b!r}")
+
+        V_e = prep(V, "V")
+        P_e = prep(P, "P")
+        D_e = prep(rayleigh, "rayleigh")
+        raw_forces = forces
+        if presc and forces is not None:
+            raw_forces = _substitute_forces(forces, presc)
+        F = generalized_forces(raw_forces, coords, problems) if coords else {}
+
+        self._check_expr("T", T_total, coords, presc, 1, problems, parameters)
+        self._check_expr("V", V_e, coords, presc, 0, problems, parameters)
+        self._check_expr("P", P_e, coords, presc, 1, problems, parameters)
+        self._check_expr("rayleigh", D_e, coords, presc, 1, problems, parameters)
+        for q, f in F.items():
+            self._check_expr(f"F_{coordinate_name(q)}", f, coords, presc, 1, problems, parameters)
+        if problems:
+            raise DeclarationError(problems, subject=f"system {name!r}" if name else "system")
+
+        self.coordinates: tuple = coords
+        self.T: sp.Expr = T_total
+        self.V: sp.Expr = V_e
+        self.P: sp.Expr = P_e
+        self.rayleigh: sp.Expr = D_e
+        self.forces: dict = F
+        self.bodies: tuple = bodies
+        self.name: str = name or ""
+        self.description: str = description
+        self.prescribed: dict = presc
+        self._declared_parameters = tuple(parameters) if parameters is not None else None
+        self._frozen = True
+
+    # --- immutability -------------------------------------------------------------------------
+    def __setattr__(self, key, value):
+        if getattr(self, "_frozen", False):
+            raise AttributeError(f"System is immutable; cannot set {key!r}")
+        object.__setattr__(self, key, value)
+
+    # --- validation -------------------------------------------------------------------------
+    @staticmethod
+    def _check_expr(what, expr, coords, presc, max_order, problems, declared) -> None:
+        names = {coordinate_name(q) for q in coords}
+        reserved = set()
+        for n in names:
+            reserved |= {n, n + VELOCITY_SUFFIX, n + "_ddot", "delta_" + n}
+        for f in sorted(expr.atoms(AppliedUndef), key=str):
+            if f in coords:
+                continue
+            if f.args == (t,):
+                problems.append(
+                    f"{what} contains {f}, which is not a coordinate of this system "
+                    f"({', '.join(sorted(names))}); add it to the coordinates or prescribe its motion"
+                )
+            else:
+                problems.append(f"{what} contains {f}: coordinates must be functions of lagrange.t only")
+        for d in expr.atoms(sp.Derivative):
+            order = sum(c for v, c in d.variable_count)
+            var_ok = all(v == t for v, _ in d.variable_count)
+            if not var_ok:
+                problems.append(f"{what} contains {d}: only time derivatives are allowed")
+            elif order > max_order:
+                if max_order == 0:
+                    problems.append(
+                        f"{what} contains the velocity {d}: V must depend on coordinates and t only; "
+                        "put velocity-dependent forces in P or forces"
+                    )
+                else:
+                    problems.append(
+                        f"{what} contains {d}: accelerations may not appear in T, P, D or forces"
+                    )
+        for s in sorted(expr.free_symbols, key=str):
+            if s == t:
+                continue
+            if s.name == "t":
+                problems.append(
+                    f"{what} contains a symbol 't' that is not lagrange.t (different assumptions); "
+                    "use lagrange.t for time"
+                )
+            elif s.name in reserved:
+                problems.append(
+                    f"{what} contains the plain symbol {s.name!r}, which clashes with coordinate "
+                    f"names; use the coordinate function {s.name.split('_dot')[0].split('_ddot')[0]}(t) "
+                    "(and .diff(t) for velocities) instead"
+                )
+            elif declared is not None and s not in declared:
+                problems.append(
+                    f"{what} contains {s}, which is neither a coordinate, a declared parameter nor t"
+                )
+
+    # --- derived quantities (memoized; the System never changes) -------------------------------
+    @cached_property
+    def _equations(self) -> Equations:
+        from ..derive.lagrange import lagrange_equations
+
+        return lagrange_equations(self)
+
+    @property
+    def derived(self) -> Equations:
+        """The derived equations object (normal form ``M q̈ = f`` in plain symbols)."""
+        return self._equations
+
+    @property
+    def parameters(self) -> tuple:
+        """Parameter symbols in the order numeric models expect them (sorted by name)."""
+        if self._declared_parameters is not None:
+            return tuple(sorted(self._declared_parameters, key=lambda s: s.name))
+        return self._equations.parameters
+
+    def equations(self) -> list[sp.Eq]:
+        r"""Lagrange's equations in Wells' form, one ``Eq`` per coordinate.
+
+        ``d/dt(∂T/∂q̇) − ∂T/∂q + ∂V/∂q = F_q + ∂P/∂q̇ − ∂D/∂q̇``, in the coordinate functions (dots in
+        Jupyter), collected in the accelerations.
+        """
+        from ..derive.lagrange import book_form
+
+        return book_form(self._equations)
+
+    @property
+    def mass_matrix(self) -> sp.Matrix:
+        """M = ∂²T/∂q̇∂q̇ (symmetric), in the coordinate functions."""
+        from .coordinates import to_functions
+
+        return to_functions(sp.Matrix(self._equations.mass_matrix), self.coordinates)
+
+    @property
+    def forcing(self) -> sp.Matrix:
+        """f in ``M q̈ = f``, in the coordinate functions."""
+        from .coordinates import to_functions
+
+        return to_functions(sp.Matrix(self._equations.forcing), self.coordinates)
+
+    def accelerations(self) -> sp.Matrix:
+        """q̈ = M⁻¹ f symbolically (small systems only; use compile() for numbers)."""
+        from .coordinates import to_functions
+
+        e = self._equations
+        return to_functions(sp.Matrix(e.mass_matrix).LUsolve(sp.Matrix(e.forcing)), self.coordinates)
+
+    def energy_split(self) -> tuple:
+        """Wells' split (2.54)–(2.56) ``T = Σ A_kl q̇_k q̇_l + Σ B_k q̇_k + C`` → ``(A, B, C)``.
+
+        ``A`` is a Matrix that already contains the 1/2 (``M = 2A``), ``B`` a column Matrix, ``C`` a scalar.
+        """
+        from ..derive.lagrange import energy_split
+
+        return energy_split(self)
+
+    def jacobi_integral(self) -> sp.Expr:
+        """h = Σ q̇ ∂L/∂q̇ − L (= T + V when nothing moves and T is quadratic)."""
+        from .coordinates import to_functions
+
+        return to_functions(self._equations.jacobi, self.coordinates)
+
+    def energy(self) -> sp.Expr:
+        """Total mechanical energy T + V."""
+        return self.T + self.V
+
+    def ignorable_coordinates(self) -> dict:
+        """``{q: p_q}`` for each ignorable (cyclic) coordinate and its conserved momentum ∂L/∂q̇."""
+        from ..derive.lagrange import ignorable_coordinates
+
+        return ignorable_coordinates(self)
+
+    def generalized_forces(self) -> dict:
+        """All non-potential generalized forces ``F_q + ∂P/∂q̇ − ∂D/∂q̇`` per coordinate."""
+        from .coordinates import to_functions
+
+        e = self._equations
+        return {q: to_functions(e.nonconservative[i], self.coordinates) for i, q in enumerate(self.coordinates)}
+
+    # --- numbers ------------------------------------------------------------------------------
+    def compile(self, params: Mapping | None = None, *, backend: str = "python") -> NumericModel:
+        """Generate numeric code for ``M q̈ = f`` with parameters bound to ``params``.
+
+        See :func:`lagrange.codegen.numeric.compile_equations`.
+        """
+        from ..codegen.numeric import compile_equations
+
+        return compile_equations(self._equations, params or {}, backend=backend)
+
+    def simulate(self, t_span, initial: Mapping, params: Mapping | None = None, **options: Any) -> Trajectory:
+        """Integrate the equations of motion; see :func:`lagrange.integrate.run.simulate`."""
+        from ..integrate.run import simulate
+
+        return simulate(self, t_span, initial, params or {}, **options)
+
+    # --- display --------------------------------------------------------------------------------
+    def __repr__(self) -> str:
+        label = f" {self.name!r}" if self.name else ""
+        names = ", ".join(coordinate_name(q) for q in self.coordinates)
+        return f"<System{label}: {len(self.coordinates)} DOF ({names})>"
+
+    def __str__(self) -> str:
+        from ..printing import format_equations
+
+        return format_equations(self)
+
+    def _repr_latex_(self) -> str:
+        from ..printing import latex_equations
+
+        return latex_equations(self)
+
+
+def _substitute_forces(forces, presc):
+    from .bodies import Force
+
+    def sub(x):
+        return sp.sympify(x).subs(presc).doit()
+
+    items = forces if isinstance(forces, (list, tuple)) else [forces]
+    out = []
+    for item in items:
+        if isinstance(item, Mapping):
+            out.append({k: sub(v) for k, v in item.items()})
+        elif isinstance(item, Force):
+            out.append(Force(item.at.subs(presc).doit(), item.vector.subs(presc).doit(), item.name))
+        else:
+            out.append(sub(item))
+    return out

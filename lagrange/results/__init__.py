@@ -1,0 +1,1 @@
+"""Results of integration: the Trajectory and its diagnostics."""

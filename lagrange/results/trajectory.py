@@ -1,0 +1,158 @@
+"""The result of a simulation: a frozen trajectory with diagnostics, lookups by coordinate, CSV export.
+
+Energy bookkeeping
+------------------
+``jacobi`` is Wells' Jacobi integral :math:`h = \\sum \\dot q\\,\\partial L/\\partial\\dot q - L`
+(= T + V when nothing moves). Its rate is the power of everything not in L,
+
+.. math:: \\frac{dh}{dt} = -\\frac{\\partial L}{\\partial t}
+          + \\sum_r \\dot q_r\\Big(F_{q_r} + \\frac{\\partial P}{\\partial\\dot q_r}
+          - \\frac{\\partial D}{\\partial\\dot q_r}\\Big),
+
+whose time integral ``work`` is carried along as an extra state during integration (same tolerance).
+The *power balance* residual ``h(t) − h(0) − work(t)`` is zero for a correct model solved exactly: a
+forgotten force, a wrong sign in P or a bad integration shows up there.
+"""
+
+from __future__ import annotations
+
+import csv
+from dataclasses import dataclass, field
+from functools import cached_property
+from pathlib import Path
+
+import numpy as np
+import sympy as sp
+
+from ..codegen.numeric import NumericModel
+from ..conventions import VELOCITY_SUFFIX, t
+from ..model.coordinates import coordinate_name, is_coordinate
+
+__all__ = ["Trajectory"]
+
+
+@dataclass(frozen=True)
+class Trajectory:
+    """A simulated trajectory.
+
+    Attributes
+    ----------
+    t : ndarray, shape (m,)
+    y : ndarray, shape (m, 2n) — ``[q, q̇]`` per row
+    model : NumericModel used (parameters bound)
+    method : str — integrator used, and why when chosen automatically
+    success : bool; message : str; nfev : int
+    work : ndarray (m,) or None — ∫ dh/dt dt, present when the system is not conservative
+    t_events, y_events : lists from scipy (one entry per event function)
+    """
+
+    t: np.ndarray
+    y: np.ndarray
+    model: NumericModel
+    method: str
+    success: bool
+    message: str
+    nfev: int
+    work: np.ndarray | None = None
+    t_events: list = field(default_factory=list)
+    y_events: list = field(default_factory=list)
+
+    @property
+    def coordinates(self) -> tuple:
+        return self.model.equations.coordinates
+
+    @property
+    def names(self) -> list[str]:
+        """Column names: coordinates then ``<name>_dot``."""
+        qs = [coordinate_name(c) for c in self.coordinates]
+        return qs + [q + VELOCITY_SUFFIX for q in qs]
+
+    def _column(self, key) -> int | str:
+        n = self.model.n
+        if isinstance(key, str):
+            names = self.names
+            if key in names:
+                return names.index(key)
+            if key.endswith("_ddot") and key[:-5] in names[:n]:
+                return ("acc", names.index(key[:-5]))  # type: ignore[return-value]
+            raise KeyError(f"{key!r} is not a coordinate or velocity of this trajectory ({', '.join(names)})")
+        if is_coordinate(key) and key in self.coordinates:
+            return self.coordinates.index(key)
+        if isinstance(key, sp.Derivative) and key.expr in self.coordinates:
+            order = sum(c for v, c in key.variable_count if v == t)
+            i = self.coordinates.index(key.expr)
+            if order == 1:
+                return n + i
+            if order == 2:
+                return ("acc", i)  # type: ignore[return-value]
+        raise KeyError(f"{key!r} is not a coordinate, velocity or acceleration of this trajectory")
+
+    def __getitem__(self, key) -> np.ndarray:
+        """``sol[theta]``, ``sol[theta.diff(t)]``, ``sol[theta.diff(t, 2)]`` or by name ``sol["theta_dot"]``."""
+        col = self._column(key)
+        if isinstance(col, tuple):
+            return self.accelerations[:, col[1]]
+        return self.y[:, col]
+
+    @cached_property
+    def accelerations(self) -> np.ndarray:
+        """q̈ at every output time, shape (m, n), from the model's right-hand side."""
+        n = self.model.n
+        return np.array([self.model.fun(ti, yi)[n:] for ti, yi in zip(self.t, self.y)]).reshape(len(self.t), n)
+
+    @cached_property
+    def diagnostics(self) -> dict[str, np.ndarray]:
+        """T, V, energy (T+V), jacobi (h) and power (dh/dt) at every output time."""
+        return self.model.diagnostics(self.t, self.y)
+
+    @property
+    def energy(self) -> np.ndarray:
+        return self.diagnostics["energy"]
+
+    @property
+    def jacobi(self) -> np.ndarray:
+        return self.diagnostics["jacobi"]
+
+    def power_balance(self) -> np.ndarray:
+        """``h(t) − h(0) − ∫ dh/dt`` — zero up to integration error for a consistent model."""
+        h = self.jacobi
+        w = self.work if self.work is not None else np.zeros_like(h)
+        return h - h[0] - w
+
+    def energy_error(self, *, relative: bool = True) -> float:
+        """Largest power-balance residual over the run (relative to max |h| when ``relative``).
+
+        For a conservative system this is the drift of the Jacobi integral (the energy when nothing
+        moves).
+        """
+        r = np.max(np.abs(self.power_balance()))
+        if not relative:
+            return float(r)
+        scale = max(np.max(np.abs(self.jacobi)), np.max(np.abs(self.diagnostics["T"])), 1e-300)
+        return float(r / scale)
+
+    # --- export -------------------------------------------------------------------------------
+    def to_csv(self, path: str | Path) -> Path:
+        """Write ``t``, the state columns and the diagnostics to a CSV file."""
+        path = Path(path)
+        d = self.diagnostics
+        with path.open("w", newline="") as fh:
+            w = csv.writer(fh)
+            w.writerow(["t", *self.names, "energy", "jacobi", "power_balance"])
+            pb = self.power_balance()
+            for i in range(len(self.t)):
+                w.writerow([repr(float(self.t[i])), *(repr(float(v)) for v in self.y[i]),
+                            repr(float(d["energy"][i])), repr(float(d["jacobi"][i])), repr(float(pb[i]))])
+        return path
+
+    def plot(self, path: str | Path | None = None, **kwargs):
+        """Time series, phase portrait and energy error (see :func:`lagrange.plot.plot_trajectory`)."""
+        from ..plot import plot_trajectory
+
+        return plot_trajectory(self, path, **kwargs)
+
+    def __repr__(self) -> str:
+        return (
+            f"<Trajectory {len(self.t)} points, t=[{self.t[0]:.6g}, {self.t[-1]:.6g}], "
+            f"method={self.method}, nfev={self.nfev}, success={self.success}>"
+        )

@@ -1,0 +1,1 @@
+"""Loading systems from specs: problem ids, Python files and safe TOML files."""
