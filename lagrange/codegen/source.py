@@ -12,7 +12,7 @@ backend) and under ``numba.njit`` (the compiled backend)::
         return [y{n}, ..., acc0, ...]
 
 M is symmetric positive definite for every physical kinetic energy, so LDLᵀ needs no pivoting; a
-pivot that is not positive raises ``ZeroDivisionError`` (turned into
+pivot that is not positive (relative to the diagonal entry, 1e-13) raises ``ZeroDivisionError`` (turned into
 :class:`~lagrange.errors.SingularMassMatrixError` by the caller, with the state).
 """
 
@@ -55,7 +55,7 @@ def _ldl_lines(n: int, upper: dict) -> tuple[list[str], list[str]]:
             return lines, []
         expr = ajj + "".join(f" - {s}" for s in terms)
         lines.append(f"d{j} = {expr}")
-        lines.append(f"if not (d{j} > 0.0):")
+        lines.append(f"if not (d{j} > 1e-13 * abs({ajj})):")
         lines.append("    raise ZeroDivisionError('mass matrix is not positive definite')")
         d[j] = f"d{j}"
         for i in range(j + 1, n):

@@ -94,6 +94,21 @@ def _state_text(model: NumericModel, y) -> str:
     return ", ".join(parts)
 
 
+def _collapse_error(model: NumericModel, res, t0: float, y0) -> IntegrationError:
+    """The step size collapsed: say when, where, and what usually causes it."""
+    n2 = 2 * model.n
+    last_t = float(res.t[-1]) if len(res.t) else t0
+    last_y = res.y[:n2, -1] if res.y.size else y0
+    return IntegrationError(
+        f"integration stopped at t={last_t:.9g} ({_state_text(model, last_y)}): {res.message} The step size "
+        "collapsed near this state: a singularity of the model (a coordinate reaching a division by zero), "
+        "a blow-up, or stiffness (try method='LSODA' or 'Radau'). Results up to this time are lost; shorten "
+        "t_span or use a terminal event to stop before it.",
+        t=last_t,
+        state=dict(zip(model.equations.coordinates, last_y)),
+    )
+
+
 def simulate(
     system,
     t_span,
@@ -228,12 +243,7 @@ def simulate(
     except (ValueError, ZeroDivisionError, OverflowError, np.linalg.LinAlgError) as exc:
         raise IntegrationError(f"integration failed: {exc}") from exc
     if res.status == -1:
-        last = res.t[-1] if len(res.t) else t0
-        raise IntegrationError(
-            f"integration stopped at t={last:.9g}: {res.message} — the step size collapsed; the system may "
-            "be stiff (try method='LSODA' or 'Radau') or singular there",
-            t=float(last),
-        )
+        raise _collapse_error(model, res, t0, y0)
     Y = res.y.T
     label = method if not why else f"{method} (auto: {why})"
     return Trajectory(
@@ -245,6 +255,8 @@ def simulate(
         message=str(res.message),
         nfev=int(res.nfev),
         work=None if conservative else Y[:, n2].copy(),
+        initial=(t0, y0.copy()),
+        switches=(res.switched_model, res.sigma) if switches else (),
         t_events=list(res.t_events) if res.t_events is not None else [],
         y_events=[np.asarray(v)[:, :n2] if len(v) else np.empty((0, n2)) for v in res.y_events]
         if res.y_events is not None

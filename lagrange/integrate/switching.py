@@ -213,7 +213,9 @@ def run_switched(model, switches, t_span, z0, t_eval, events, kwargs, with_work)
         res = solve_ivp(f, (t_cur, t1), z_cur, t_eval=te, events=all_events or None, **kwargs)
         nfev += res.nfev
         if res.status == -1:
-            raise IntegrationError(f"integration stopped at t={res.t[-1] if len(res.t) else t_cur:.9g}: {res.message}")
+            from .run import _collapse_error
+
+            raise _collapse_error(sw_model, res, t_cur, z_cur[:n2])
         for ti, zi in zip(res.t, res.y.T):
             out_t.append(ti)
             out_z.append(zi)

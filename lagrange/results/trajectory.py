@@ -42,7 +42,8 @@ class Trajectory:
     model : NumericModel used (parameters bound)
     method : str — integrator used, and why when chosen automatically
     success : bool; message : str; nfev : int
-    work : ndarray (m,) or None — ∫ dh/dt dt, present when the system is not conservative
+    work : ndarray (m,) or None — ∫ dh/dt dt from t0, present when the system is not conservative
+    initial : (t0, y0) — the initial state (output times need not include t0)
     t_events, y_events : lists from scipy (one entry per event function)
     """
 
@@ -56,6 +57,8 @@ class Trajectory:
     work: np.ndarray | None = None
     t_events: list = field(default_factory=list)
     y_events: list = field(default_factory=list)
+    initial: tuple = ()  # (t0, y0): the work integral starts there, whatever the output times
+    switches: tuple = ()  # (switched model, sigma array (m, K)) when sign() switches were integrated
 
     @property
     def coordinates(self) -> tuple:
@@ -98,7 +101,13 @@ class Trajectory:
     def accelerations(self) -> np.ndarray:
         """q̈ at every output time, shape (m, n), from the model's right-hand side."""
         n = self.model.n
-        return np.array([self.model.fun(ti, yi)[n:] for ti, yi in zip(self.t, self.y)]).reshape(len(self.t), n)
+        if self.switches:
+            sw_model, sigma = self.switches
+            rows = [sw_model.rhs(ti, yi, np.concatenate([self.model.params, si])).__getitem__(slice(n, None))
+                    for ti, yi, si in zip(self.t, self.y, sigma)]
+        else:
+            rows = [self.model.fun(ti, yi)[n:] for ti, yi in zip(self.t, self.y)]
+        return np.array(rows, dtype=float).reshape(len(self.t), n)
 
     @cached_property
     def diagnostics(self) -> dict[str, np.ndarray]:
@@ -117,7 +126,12 @@ class Trajectory:
         """``h(t) − h(0) − ∫ dh/dt`` — zero up to integration error for a consistent model."""
         h = self.jacobi
         w = self.work if self.work is not None else np.zeros_like(h)
-        return h - h[0] - w
+        if self.initial:
+            t0, y0 = self.initial
+            h0 = self.model.diagnostics(np.array([t0]), np.asarray(y0)[None, :])["jacobi"][0]
+        else:
+            h0 = h[0]
+        return h - h0 - w
 
     def energy_error(self, *, relative: bool = True) -> float:
         """Largest power-balance residual over the run (relative to max |h| when ``relative``).

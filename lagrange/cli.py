@@ -1,0 +1,182 @@
+"""The ``lagrange`` command line: parses arguments and calls the library (no logic of its own).
+
+Errors are one line on stderr and a non-zero exit (2 for bad input, 3 for an internal failure);
+set ``LAGRANGE_DEBUG=1`` to see tracebacks.
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import sys
+
+from . import __version__
+from .errors import LagrangeError, SpecError
+
+__all__ = ["main"]
+
+
+def _kv(items, what) -> dict:
+    out = {}
+    for item in items or []:
+        if "=" not in item:
+            raise SpecError(f"--{what} expects name=value, got {item!r}")
+        k, v = item.split("=", 1)
+        try:
+            out[k.strip()] = float(v)
+        except ValueError:
+            raise SpecError(f"--{what} {k}: {v!r} is not a number") from None
+    return out
+
+
+def _cmd_problems(args) -> int:
+    from .corpus.registry import all_problems
+
+    probs = [p for p in all_problems() if args.chapter is None or p.chapter == args.chapter]
+    if not probs:
+        print(f"no problems in chapter {args.chapter}")
+        return 0
+    chapter = None
+    for p in probs:
+        if p.chapter != chapter:
+            chapter = p.chapter
+            print(f"\nChapter {chapter}")
+        dyn = "" if p.simulation is not None else "  [no dynamics]"
+        print(f"  {p.id:<22} {p.title}{dyn}")
+    print(f"\n{len(probs)} problem(s)")
+    return 0
+
+
+def _cmd_derive(args) -> int:
+    from .printing import format_equations, latex
+    from .spec.loader import load_spec
+
+    spec = load_spec(args.spec)
+    system = spec.system
+    if spec.problem is not None:
+        print(f"{spec.problem.id}: {spec.problem.title} ({spec.problem.source})")
+    if args.latex:
+        for eq in system.equations():
+            print(latex(eq))
+    else:
+        print(format_equations(system))
+    ign = system.ignorable_coordinates()
+    if ign:
+        from .printing import pretty
+
+        print("\nignorable coordinates (conserved momenta):")
+        for q, p in ign.items():
+            print(f"  {q.func.__name__}: p = {pretty(p)}")
+    return 0
+
+
+def _cmd_simulate(args) -> int:
+    from .spec.loader import load_spec
+
+    spec = load_spec(args.spec)
+    params = {**spec.params, **_kv(args.param, "param")}
+    initial = {**spec.initial, **_kv(args.initial, "initial")}
+    t_end = args.t_end if args.t_end is not None else spec.t_end
+    if t_end is None:
+        raise SpecError(f"{args.spec}: no end time: pass --t-end")
+    if not initial:
+        raise SpecError(f"{args.spec}: no initial conditions (the problem has no dynamics to simulate)")
+    options = dict(spec.options)
+    options.update(method=args.method, rtol=args.rtol, atol=args.atol, backend=args.backend)
+    if args.friction:
+        options["friction"] = args.friction
+    sol = spec.system.simulate(float(t_end), initial, params, **options)
+    print(f"{spec.label}: {spec.system!r}")
+    print(f"method {sol.method}, {sol.nfev} right-hand-side evaluations, {len(sol.t)} output points")
+    names = sol.names
+    final = ", ".join(f"{n}={v:.10g}" for n, v in zip(names, sol.y[-1]))
+    print(f"state at t={sol.t[-1]:.6g}: {final}")
+    label = "energy drift" if sol.work is None else "power-balance residual"
+    print(f"{label} (relative): {sol.energy_error():.3e}")
+    if args.plot:
+        sol.plot(args.plot, title=spec.label)
+        print(f"plot written to {args.plot}")
+    if args.csv:
+        sol.to_csv(args.csv)
+        print(f"CSV written to {args.csv}")
+    return 0
+
+
+def _cmd_verify(args) -> int:
+    from .corpus.registry import all_problems, get_problem
+
+    probs = [get_problem(i) for i in args.ids] if args.ids else list(all_problems())
+    if args.chapter is not None:
+        probs = [p for p in probs if p.chapter == args.chapter]
+    failed = 0
+    for p in probs:
+        for r in p.check():
+            if not r.ok:
+                failed += 1
+                print(f"FAIL {p.id}: {r.answer}: {r.detail}")
+            elif args.verbose:
+                print(f"ok   {p.id}: {r.answer}")
+    checks = sum(len(p.answers) for p in probs)
+    print(f"{len(probs)} problems, {checks} answers checked, {failed} failed")
+    return 1 if failed else 0
+
+
+def _parser() -> argparse.ArgumentParser:
+    ap = argparse.ArgumentParser(
+        prog="lagrange",
+        description="Derive Lagrange's equations the way Wells does, and simulate them.",
+    )
+    ap.add_argument("--version", action="version", version=f"lagrange {__version__}")
+    sub = ap.add_subparsers(dest="command", required=True)
+
+    p = sub.add_parser("problems", help="list the worked problems of the corpus by chapter")
+    p.add_argument("--chapter", type=int, help="only this chapter")
+    p.set_defaults(func=_cmd_problems)
+
+    spec_help = "a problem id (see `lagrange problems`), a Python file defining `system`, or a TOML spec"
+    p = sub.add_parser("derive", help="print Lagrange's equations of a system")
+    p.add_argument("spec", help=spec_help)
+    p.add_argument("--latex", action="store_true", help="print LaTeX instead of text")
+    p.set_defaults(func=_cmd_derive)
+
+    p = sub.add_parser("simulate", help="integrate the equations of motion")
+    p.add_argument("spec", help=spec_help)
+    p.add_argument("--t-end", type=float, help="end time (default: the spec's)")
+    p.add_argument("--plot", help="write a PNG plot to this path")
+    p.add_argument("--csv", help="write the trajectory to this CSV path")
+    p.add_argument("--method", default="DOP853", help="DOP853 (default), RK45, RK23, LSODA, Radau, BDF or auto")
+    p.add_argument("--rtol", type=float, default=1e-9)
+    p.add_argument("--atol", type=float, default=1e-11)
+    p.add_argument("--backend", default="python", help="python (default), numba, reference or auto")
+    p.add_argument("--friction", choices=["events", "regularize"], help="treatment of sign() switches")
+    p.add_argument("--param", action="append", metavar="NAME=VALUE", help="override a parameter value")
+    p.add_argument("--initial", action="append", metavar="NAME=VALUE", help="override an initial value (x, x_dot)")
+    p.set_defaults(func=_cmd_simulate)
+
+    p = sub.add_parser("verify", help="check corpus problems against the book's answers")
+    p.add_argument("ids", nargs="*", help="problem ids (default: all)")
+    p.add_argument("--chapter", type=int)
+    p.add_argument("-v", "--verbose", action="store_true")
+    p.set_defaults(func=_cmd_verify)
+    return ap
+
+
+def main(argv: list[str] | None = None) -> int:
+    args = _parser().parse_args(argv)
+    try:
+        return int(args.func(args) or 0)
+    except LagrangeError as exc:
+        print(f"lagrange: error: {exc}", file=sys.stderr)
+        return 2
+    except KeyboardInterrupt:  # pragma: no cover
+        return 130
+    except Exception as exc:  # noqa: BLE001 - one line, never a traceback, unless debugging
+        if os.environ.get("LAGRANGE_DEBUG"):
+            raise
+        print(f"lagrange: internal error: {type(exc).__name__}: {exc} (set LAGRANGE_DEBUG=1 for details)",
+              file=sys.stderr)
+        return 3
+
+
+if __name__ == "__main__":  # pragma: no cover
+    sys.exit(main())

@@ -1,0 +1,92 @@
+import sympy as sp
+
+from lagrange import Particle, System, coordinates, parameters, t
+
+
+def _spring_pendulum():
+    r, th = coordinates("r theta")
+    m, g, k, r0, b = parameters("m g k r0 b")
+    s = System(
+        [r, th],
+        bodies=[Particle(m, (r * sp.sin(th), -r * sp.cos(th)))],
+        V=-m * g * r * sp.cos(th) + k * (r - r0) ** 2 / 2,
+        P=-b * r.diff(t) ** 2 / 2,
+    )
+    return s, r, th, (m, g, k, r0, b)
+
+
+def test_book_form_of_spring_pendulum():
+    s, r, th, (m, g, k, r0, b) = _spring_pendulum()
+    e_r, e_th = s.equations()
+    assert sp.simplify(e_r.lhs - (m * r.diff(t, 2) - m * r * th.diff(t) ** 2 + k * (r - r0) - m * g * sp.cos(th))) == 0
+    assert sp.simplify(e_r.rhs + b * r.diff(t)) == 0  # Wells: F = +dP/dqdot with P = -b rdot^2/2
+    assert sp.simplify(e_th.lhs - (m * r**2 * th.diff(t, 2) + 2 * m * r * r.diff(t) * th.diff(t) + m * g * r * sp.sin(th))) == 0
+    assert e_th.rhs == 0
+
+
+def test_rayleigh_equals_minus_power_function():
+    s, r, th, (m, g, k, r0, b) = _spring_pendulum()
+    s2 = System(s.coordinates, bodies=s.bodies, V=s.V, rayleigh=b * r.diff(t) ** 2 / 2)
+    assert all(sp.simplify(a - c) == 0 for a, c in zip(s.forcing, s2.forcing))
+
+
+def test_mass_matrix_symmetric_and_forcing():
+    s, r, th, (m, *_rest) = _spring_pendulum()
+    M = s.mass_matrix
+    assert M == M.T
+    assert sp.simplify(M - sp.diag(m, m * r**2)) == sp.zeros(2, 2)
+
+
+def test_energy_split_wells_2_55_translating_frame():
+    """Wells (2.45)/(2.55): A contains the 1/2; B and C appear for a frame with constant acceleration."""
+    x = coordinates("x")
+    m, v, a = parameters("m v a")
+    s = System([x], bodies=[Particle(m, (x + v * t + a * t**2 / 2,))])
+    A, B, C = s.energy_split()
+    assert sp.simplify(A[0, 0] - m / 2) == 0
+    assert sp.simplify(B[0] - m * (v + a * t)) == 0
+    assert sp.simplify(C - m * (v + a * t) ** 2 / 2) == 0
+    (eq,) = s.equations()
+    assert sp.simplify(eq.lhs - (m * x.diff(t, 2) + m * a)) == 0
+
+
+def test_jacobi_integral_and_ignorable_coordinates():
+    """Wells Ex. 3.3: particle on a table tied through a hole to a spring: p_theta = m r^2 thetadot."""
+    r, th = coordinates("r theta")
+    m, k = parameters("m k")
+    s = System([r, th], bodies=[Particle(m, (r * sp.cos(th), r * sp.sin(th)))], V=k * r**2 / 2)
+    ign = s.ignorable_coordinates()
+    assert list(ign) == [th]
+    assert sp.simplify(ign[th] - m * r**2 * th.diff(t)) == 0
+    h = s.jacobi_integral()
+    assert sp.simplify(h - (s.T + s.V)) == 0
+    assert s.derived.is_conservative
+
+
+def test_rotating_frame_gives_coriolis_and_centrifugal():
+    """Wells Ex. 1.2: axes rotating at constant omega."""
+    x, y = coordinates("x y")
+    m, w = parameters("m omega")
+    Fx, Fy = parameters("F_x F_y", real=True)
+    c, s_ = sp.cos(w * t), sp.sin(w * t)
+    s = System([x, y], bodies=[Particle(m, (x * c - y * s_, x * s_ + y * c))], forces={x: Fx, y: Fy})
+    ex, ey = s.equations()
+    assert sp.simplify(ex.lhs - ex.rhs - (m * x.diff(t, 2) - m * x * w**2 - 2 * m * w * y.diff(t) - Fx)) == 0
+    assert sp.simplify(ey.lhs - ey.rhs - (m * y.diff(t, 2) - m * y * w**2 + 2 * m * w * x.diff(t) - Fy)) == 0
+    # h differs from T + V in a moving frame (Jacobi integral of the rotating frame)
+    assert sp.simplify(s.jacobi_integral() - (s.T + s.V)) != 0
+
+
+def test_printing_uses_dots():
+    s, *_ = _spring_pendulum()
+    text = str(s)
+    assert "\u03b8\u0308" in text and "r\u0307" in text  # θ with two dots, r with one
+    assert r"\ddot{\theta}" in s._repr_latex_()
+
+
+def test_nlink_derivation_is_compact():
+    from lagrange.examples import n_link_pendulum
+
+    s = n_link_pendulum(5)
+    ops = sp.count_ops(list(s.derived.mass_matrix)) + sp.count_ops(list(s.derived.forcing))
+    assert ops < 3000
