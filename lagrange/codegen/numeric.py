@@ -129,7 +129,8 @@ class NumericModel:
         return np.array(M, dtype=float).reshape(self.n, self.n), np.array(f, dtype=float).reshape(self.n)
 
     def diagnostics(self, t, y) -> dict[str, np.ndarray]:
-        """Vectorized ``T``, ``V``, ``energy`` (T+V), ``jacobi`` (h) and ``power`` (dh/dt) over states.
+        """Vectorized ``T``, ``V``, ``energy`` (T+V), ``jacobi`` (h), ``power`` (dh/dt) and the quadratic and
+        velocity-free parts ``T2``, ``T0`` of T over states.
 
         ``t`` shape (m,), ``y`` shape (m, 2n).
         """
@@ -137,7 +138,7 @@ class NumericModel:
         y = np.asarray(y, dtype=float)
         cols = [y[:, i] for i in range(y.shape[1])]
         vals = self._aux(t, cols, self.params)
-        names = ("T", "V", "jacobi", "power")
+        names = ("T", "V", "jacobi", "power", "T2", "T0")
         out = {k: np.broadcast_to(np.asarray(v, dtype=float), t.shape).copy() for k, v in zip(names, vals)}
         out["energy"] = out["T"] + out["V"]
         return out
@@ -172,7 +173,10 @@ def _aux_function(eqs: Equations):
     n = eqs.n
     ys = sp.symbols(f"y0:{2 * n}", real=True)
     ps = [ren[s] for s in eqs.parameters]
-    exprs = [e.xreplace(ren) for e in (eqs.kinetic, eqs.potential, eqs.jacobi, eqs.jacobi_rate)]
+    T0 = eqs.kinetic.subs({v: 0 for v in eqs.qd})
+    qd = sp.Matrix(eqs.qd)
+    T2 = (qd.T * eqs.mass_matrix * qd)[0, 0] / 2
+    exprs = [e.xreplace(ren) for e in (eqs.kinetic, eqs.potential, eqs.jacobi, eqs.jacobi_rate, T2, T0)]
     f = sp.lambdify((ren[t], ys, ps), exprs, modules="numpy", cse=True)
 
     def aux(t_, cols, p):

@@ -134,16 +134,23 @@ class Trajectory:
         return h - h0 - w
 
     def energy_error(self, *, relative: bool = True) -> float:
-        """Largest power-balance residual over the run (relative to max |h| when ``relative``).
+        """Largest power-balance residual over the run, relative to the largest of max|h|, max|T|, max|V|,
+        max|T2|, max|T0| (the parts of h that may cancel) and max|work| when ``relative`` (absolute when all
+        of them vanish).
 
         For a conservative system this is the drift of the Jacobi integral (the energy when nothing
         moves).
         """
-        r = np.max(np.abs(self.power_balance()))
+        r = float(np.max(np.abs(self.power_balance())))
         if not relative:
-            return float(r)
-        scale = max(np.max(np.abs(self.jacobi)), np.max(np.abs(self.diagnostics["T"])), 1e-300)
-        return float(r / scale)
+            return r
+        d = self.diagnostics
+        parts = [np.max(np.abs(d[k])) for k in ("jacobi", "T", "V", "T2", "T0")]
+        if self.work is not None:
+            parts.append(np.max(np.abs(self.work)))
+        scale = float(max(parts))
+        # every energy zero (e.g. a body at rest in inertial space seen from a rotating frame): absolute
+        return r / scale if scale > 1e-12 else r
 
     # --- export -------------------------------------------------------------------------------
     def to_csv(self, path: str | Path) -> Path:

@@ -1,0 +1,52 @@
+"""The command line through a subprocess, as a user runs it."""
+
+import subprocess
+import sys
+
+import pytest
+
+
+def run(*args, cwd=None):
+    return subprocess.run([sys.executable, "-m", "lagrange.cli", *args], capture_output=True, text=True, cwd=cwd,
+                          timeout=300)
+
+
+def test_help_everywhere():
+    for cmd in ([], ["derive"], ["simulate"], ["problems"], ["verify"]):
+        out = run(*cmd, "--help")
+        assert out.returncode == 0 and "usage: lagrange" in out.stdout
+
+
+def test_problems_derive_simulate(tmp_path):
+    out = run("problems", "--chapter", "3")
+    assert out.returncode == 0 and "ex3.2" in out.stdout and "Chapter 3" in out.stdout
+    out = run("derive", "ex3.2")
+    assert out.returncode == 0 and "x\u0308" in out.stdout
+    out = run("derive", "ex3.2", "--latex")
+    assert out.returncode == 0 and r"\ddot{x}" in out.stdout
+    png, csv = tmp_path / "a.png", tmp_path / "a.csv"
+    out = run("simulate", "ex3.2", "--t-end", "2", "--plot", str(png), "--csv", str(csv))
+    assert out.returncode == 0, out.stderr
+    assert png.stat().st_size > 10_000 and csv.read_text().startswith("t,x,x_dot")
+    assert "power-balance residual" in out.stdout or "energy drift" in out.stdout
+
+
+@pytest.mark.parametrize(
+    "args, message",
+    [
+        (["derive", "nosuch"], "no problem with id"),
+        (["simulate", "ex3.2", "--param", "m=abc"], "not a number"),
+        (["simulate", "ex3.2", "--param", "zz=1"], "unknown parameter"),
+        (["derive", "missing.toml"], "does not exist"),
+    ],
+)
+def test_errors_are_one_line(args, message):
+    out = run(*args)
+    assert out.returncode == 2
+    assert message in out.stderr
+    assert "Traceback" not in out.stderr and len(out.stderr.strip().splitlines()) == 1
+
+
+def test_verify_runs_the_book_checks():
+    out = run("verify", "ex3.2", "ex6.1")
+    assert out.returncode == 0 and "0 failed" in out.stdout
