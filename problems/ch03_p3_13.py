@@ -2,7 +2,7 @@
 
 import sympy as sp
 
-from lagrange import Force, Particle, System, coordinates, parameters, t
+from lagrange import Force, Particle, System, coordinates, parameters
 from lagrange.corpus import GeneralizedForces, Problem
 
 theta = coordinates("theta")

@@ -11,7 +11,7 @@ m1, m2, m3, k1, k2, k3, k4, s1, s2, s3, s4 = parameters("m1 m2 m3 k1 k2 k3 k4 s1
 # Spring i joins points s_i apart along the line; its transverse ends are displaced by Δy: length sqrt(s² + Δy²).
 ys = [0, y1, y2, y3, 0]
 ks, ss = [k1, k2, k3, k4], [s1, s2, s3, s4]
-V_exact = sum(kk * (sp.sqrt(s**2 + (ys[i + 1] - ys[i]) ** 2) - s) ** 2 / 2 for i, (kk, s) in enumerate(zip(ks, ss)))
+V_exact = sum(kk * (sp.sqrt(s**2 + (ys[i + 1] - ys[i]) ** 2) - s) ** 2 / 2 for i, (kk, s) in enumerate(zip(ks, ss, strict=True)))
 system = System([y1, y2, y3], bodies=[Particle(m1, (0, y1)), Particle(m2, (0, y2)), Particle(m3, (0, y3))],
                 V=V_exact, name="masses on transverse springs")
 

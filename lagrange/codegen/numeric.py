@@ -185,6 +185,20 @@ def _aux_function(eqs: Equations):
     return aux
 
 
+class _Lazy:
+    """A function built on first call: diagnostics and the reference M, f are not needed by every run,
+    and plain lambdify of a large model is slow (seconds at 10 DOF)."""
+
+    def __init__(self, build: Callable):
+        self._build = build
+        self._fn: Callable | None = None
+
+    def __call__(self, *args):
+        if self._fn is None:
+            self._fn = self._build()
+        return self._fn(*args)
+
+
 def _python_rhs(source: str) -> Callable:
     namespace: dict = {"math": math}
     exec(compile(source, "<lagrange rhs>", "exec"), namespace)  # noqa: S102 - our own generated code
@@ -206,9 +220,10 @@ def compile_equations(eqs: Equations, params: Mapping, *, backend: str = "python
     p = bind_parameters(eqs, params)
     if backend == "auto":
         backend = "numba" if importlib.util.find_spec("numba") else "python"
-    ref_rhs, mass_forcing = _reference_functions(eqs)
-    aux = _aux_function(eqs)
+    aux = _Lazy(lambda: _aux_function(eqs))
+    mass_forcing = _Lazy(lambda: _reference_functions(eqs)[1])
     if backend == "reference":
+        ref_rhs, mass_forcing = _reference_functions(eqs)
         return NumericModel(eqs, p, "reference", "", ref_rhs, aux, mass_forcing)
     fused, _ = fuse(eqs)
     if backend == "python":

@@ -60,13 +60,13 @@ def lagrange_equations(system) -> Equations:
     V = to_symbols(system.V, coords)
     P = to_symbols(system.P, coords)
     D = to_symbols(system.rayleigh, coords)
-    F = [to_symbols(system.forces[c], coords) for c in coords]
+    F = [_tidy_force(to_symbols(system.forces[c], coords)) for c in coords]
 
     dT_dqd = [sp.diff(T, v) for v in qd]
     M = sp.zeros(n, n)
     for i in range(n):
         for j in range(i, n):
-            M[i, j] = M[j, i] = sp.diff(dT_dqd[i], qd[j])
+            M[i, j] = M[j, i] = _tidy_force(sp.diff(dT_dqd[i], qd[j]))
     inertial = []
     forcing = []
     potential_gradient = []
@@ -114,27 +114,59 @@ def lagrange_equations(system) -> Equations:
 
 
 _TIDY_LIMIT = 400
-_KINETIC_LIMIT = 250
+_KINETIC_LIMIT = 600
+_TRIGSIMP_LIMIT = 60
+
+
+def _pythagoras(expr):
+    """Cheap Pythagorean cleanup: expand, then try sin² → 1 − cos² and cos² → 1 − sin²; keep the
+    shortest of the three. Collapses the sin²(ωt) + cos²(ωt) left by rotating frames at polynomial cost."""
+    e = sp.expand(expr)
+    if not e.has(sp.sin, sp.cos):
+        return e
+    candidates = [e]
+    for f, other in ((sp.sin, sp.cos), (sp.cos, sp.sin)):
+
+        def is_power(x, f=f):
+            return x.is_Pow and isinstance(x.base, f) and x.exp.is_Integer and x.exp >= 2
+
+        def rewrite(x, f=f, other=other):
+            u = x.base.args[0]
+            return (1 - other(u) ** 2) ** (x.exp // 2) * f(u) ** (x.exp % 2)
+
+        candidates.append(sp.expand(e.replace(is_power, rewrite)))
+    return min(candidates, key=sp.count_ops)
 
 
 def _tidy_kinetic(T):
-    """Expand and trig-simplify a small T (sin² + cos² = 1), so M and f stay compact and readable.
+    """Compact a textbook-sized T (sin² + cos² = 1) so that M and f stay small and readable.
 
-    Bounded: a T above ``_KINETIC_LIMIT`` operations is left as it is (no simplify on big systems).
+    Bounded: a T above ``_KINETIC_LIMIT`` operations is left as it is (no simplify on big systems);
+    ``trigsimp`` is tried only on very small results.
     """
     if sp.count_ops(T) > _KINETIC_LIMIT:
         return T
-    e = sp.expand(T)
-    if e.has(sp.sin, sp.cos):
-        e = sp.trigsimp(e)
-    return sp.expand(e) if sp.count_ops(e) <= sp.count_ops(T) else T
+    e = _pythagoras(T)
+    if e.has(sp.sin, sp.cos) and sp.count_ops(e) <= _TRIGSIMP_LIMIT:
+        e2 = sp.expand(sp.trigsimp(e))
+        e = e2 if sp.count_ops(e2) < sp.count_ops(e) else e
+    # expanded sums of squares cost more operations than the compact squares they came from; accept
+    # that (derivatives of the expanded form are simpler), but never a blow-up
+    return e if sp.count_ops(e) <= 3 * sp.count_ops(T) + 10 else T
+
+
+def _tidy_force(F):
+    """The same Pythagorean cleanup for a generalized force or a mass-matrix entry (e.g. a force vector
+    rotating with t), accepted unless it grows the expression."""
+    if F == 0 or sp.count_ops(F) > _KINETIC_LIMIT:
+        return F
+    e = _pythagoras(F)
+    return e if sp.count_ops(e) <= sp.count_ops(F) else F
 
 
 def _tidy(expr, collect_in=()):
     """Light, bounded tidying for display: collect in velocities, factor common terms."""
-    if expr == 0:
-        return expr
-    if sp.count_ops(expr) > _TIDY_LIMIT:
+    if expr == 0 or sp.count_ops(expr) > _TIDY_LIMIT:
         return expr
     e = sp.expand(expr)
     if collect_in:

@@ -20,7 +20,7 @@ from sympy.core.function import AppliedUndef
 from ..conventions import VELOCITY_SUFFIX, t
 from ..errors import DeclarationError
 from .bodies import Body
-from .coordinates import coordinate_name, is_coordinate
+from .coordinates import coordinate_name, is_coordinate, virtual_displacement
 from .forces import generalized_forces
 
 if TYPE_CHECKING:
@@ -366,8 +366,11 @@ class System:
 def _substitute_forces(forces, presc):
     from .bodies import Force
 
+    # a prescribed coordinate has no virtual displacement: with t frozen, δs = 0 (Wells Ex. 4.9)
+    frozen = {virtual_displacement(k): 0 for k in presc}
+
     def sub(x):
-        return sp.sympify(x).subs(presc).doit()
+        return sp.sympify(x).subs(presc).doit().subs(frozen)
 
     items = forces if isinstance(forces, (list, tuple)) else [forces]
     out = []
