@@ -85,6 +85,13 @@ def _cmd_simulate(args) -> int:
     options.update(method=args.method, rtol=args.rtol, atol=args.atol, backend=args.backend)
     if args.friction:
         options["friction"] = args.friction
+    if not args.quiet:
+        from .printing import format_equations
+
+        if spec.problem is not None:
+            print(f"{spec.problem.id}: {spec.problem.title} ({spec.problem.source})")
+        print(format_equations(spec.system))
+        print()
     sol = spec.system.simulate(float(t_end), initial, params, **options)
     print(f"{spec.label}: {spec.system!r}")
     print(f"method {sol.method}, {sol.nfev} right-hand-side evaluations, {len(sol.t)} output points")
@@ -151,6 +158,7 @@ def _parser() -> argparse.ArgumentParser:
     p.add_argument("--friction", choices=["events", "regularize"], help="treatment of sign() switches")
     p.add_argument("--param", action="append", metavar="NAME=VALUE", help="override a parameter value")
     p.add_argument("--initial", action="append", metavar="NAME=VALUE", help="override an initial value (x, x_dot)")
+    p.add_argument("-q", "--quiet", action="store_true", help="do not print the equations first")
     p.set_defaults(func=_cmd_simulate)
 
     p = sub.add_parser("verify", help="check corpus problems against the book's answers")

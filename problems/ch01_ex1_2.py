@@ -55,11 +55,10 @@ PROBLEMS = [
         system=system_vec,
         answers=[
             GeneralizedForces({x2: F_x2, y2: F_y2}, which="applied"),
-            EquationsOfMotion(EOM),
+            EquationsOfMotion(EOM, per_equation=True),
         ],
         simulation=SIM,
         ranges={"F_x2": (-2, 2), "F_y2": (-2, 2)},
-        correction="EquationsOfMotion is checked without per_equation: the engine leaves F_x2(sin²ωt + cos²ωt) "
-        "unsimplified, so the exact-ratio test cannot cancel it (the accelerations agree).",
+        correction="",
     ),
 ]

@@ -33,6 +33,7 @@ PROBLEM = Problem(
                 sp.Eq(F_x2, m * x2.diff(t, 2) - m * x2 * omega**2 - 2 * m * omega * y2.diff(t) + m * a_x * c),
                 sp.Eq(F_y2, m * y2.diff(t, 2) - m * y2 * omega**2 + 2 * m * omega * x2.diff(t) - m * a_x * s),
             ],
+            per_equation=True,
         ),
     ],
     simulation=Simulation(
@@ -41,7 +42,6 @@ PROBLEM = Problem(
         t_end=5.0,
     ),
     ranges={"F_x2": (-2, 2), "F_y2": (-2, 2)},
-    correction="EquationsOfMotion is checked through the accelerations only (no per_equation): the engine leaves "
-    "sin²ωt + cos²ωt factors unsimplified, so the exact-ratio test cannot cancel them. KineticEnergy is T = (m/2)(Ẋ1² + Ẏ1²) of the problem's transformation equations (2.37); the "
+    correction="KineticEnergy is T = (m/2)(Ẋ1² + Ẏ1²) of the problem's transformation equations (2.37); the "
     "book's answer is the pair of force equations.",
 )

@@ -32,7 +32,7 @@ PROBLEM = Problem(
             sp.Eq(m * x2.diff(t, 2) - 2 * m * y2.diff(t) * W - m * y2 * a / R - m * (R + x2) * W**2, F_x2),
             sp.Eq(m * y2.diff(t, 2) + 2 * m * x2.diff(t) * W + m * (R + x2) * a / R - m * y2 * W**2, F_y2),
             sp.Eq(m * z2.diff(t, 2), F_z2),
-        ]),
+        ], per_equation=True),
     ],
     simulation=Simulation(
         params={m: 1, R: 10, omega: 0.5, a: 0.2, F_x2: 0, F_y2: 0, F_z2: 0},
@@ -41,7 +41,5 @@ PROBLEM = Problem(
     ),
     ranges={"F_x2": (-2, 2), "F_y2": (-2, 2), "F_z2": (-2, 2)},
     correction="The key prints −m(R+x2)(ω+at/R)² in the y2 equation; the correct term is −m y2(ω+at/R)² "
-    "(catalog: sym ✓ re-derived; the centrifugal term along y2 must be proportional to y2, as in Ex. 1.2). "
-    "Checked through the accelerations only: the engine leaves sin²β + cos²β unsimplified, so the per-equation "
-    "exact-ratio test cannot be used.",
+    "(catalog: sym ✓ re-derived; the centrifugal term along y2 must be proportional to y2, as in Ex. 1.2).",
 )

@@ -47,9 +47,7 @@ PROBLEMS = [
         source="Wells, Example 3.4",
         system=by_components,
         answers=[KineticEnergy(T_book), GeneralizedForces({r: Fr, theta: Fth}),
-                 # per_equation off here only: the derived F_r keeps k(r−r0)(sin²θ + cos²θ) unsimplified and
-                 # the per-equation ratio test (sp.cancel) cannot see that it is 1; the variant below checks it.
-                 EquationsOfMotion(eom_rows)],
+                 EquationsOfMotion(eom_rows, per_equation=True)],
         simulation=sim,
         correction=corr,
     ),

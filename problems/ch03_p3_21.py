@@ -32,7 +32,7 @@ PROBLEM = Problem(
         EquationsOfMotion([
             sp.Eq((1 + 4 * b**2 * r**2) * r.diff(t, 2) + 4 * b**2 * r * r.diff(t) ** 2 - w**2 * r
                   + a * sp.sin(w * t) + 2 * g * b * r, 0)
-        ]),  # accelerations compared; per-equation ratio test would need trig simplification (sin²+cos²)
+        ], per_equation=True),
     ],
     simulation=Simulation(params={m: 1, g: 9.81, b: 1, a: 0.5, w: 2}, initial={r: 0.3, r.diff(t): 0}, t_end=3),
     correction="The book gives T (φ general) and F_r; the equation of motion for φ = ωt is derived in the catalog "

@@ -28,7 +28,7 @@ PROBLEM = Problem(
             sp.Eq((1 + 4 * b**2 * r**2) * r.diff(t, 2) + 4 * b**2 * r * rd**2 - r * pd**2 + a * sp.sin(phi)
                   + 2 * g * b * r, 0),
             sp.Eq(r**2 * phi.diff(t, 2) + 2 * r * rd * pd + a * r * sp.cos(phi), 0),
-        ]),  # accelerations compared; per-equation ratio test would need trig simplification (sin²+cos²)
+        ], per_equation=True),
     ],
     simulation=Simulation(params={m: 1, g: 9.81, b: 1, a: 0.5},
                           initial={r: 0.3, phi: 0, r.diff(t): 0, phi.diff(t): 2.0}, t_end=2),

@@ -27,7 +27,7 @@ PROBLEM = Problem(
                 sp.Eq(Fx2, m * x2.diff(t, 2) - m * x2 * w**2 - 2 * m * w * y2.diff(t)),
                 sp.Eq(Fy2, m * y2.diff(t, 2) - m * y2 * w**2 + 2 * m * w * x2.diff(t)),
             ],
-            # per-equation ratio test off: F_x2 comes out as F_x2 (sin² + cos²), which sp.cancel cannot reduce.
+            per_equation=True,
         ),
     ],
     simulation=Simulation(params={m: 1, w: 1, Fx2: 0.0, Fy2: 0.0},

@@ -36,7 +36,7 @@ PROBLEM = Problem(
                   - m2 * r1 * r2 * phd**2 * sp.sin(phi - theta), Fth),
             sp.Eq(m2 * r2**2 * phi.diff(t, 2) + m2 * r1 * r2 * theta.diff(t, 2) * sp.cos(phi - theta)
                   + m2 * r1 * r2 * thd**2 * sp.sin(phi - theta), Fph),
-        ]),  # accelerations compared; the derived equations keep sin/cos of θ and φ separately
+        ], per_equation=True),
     ],
     simulation=Simulation(params={m1: 1, m2: 1, r1: 1, r2: 1, g: 9.81},
                           initial={theta: 0.5, phi: -0.3, thd: 0, phd: 0}, t_end=5),

@@ -45,7 +45,7 @@ PROBLEMS = [
                 sp.Eq((M1 + 4 * M + 4 * I / r**2 + m) * x.diff(t, 2) + m / sp.tan(th) * y.diff(t, 2), f),
                 sp.Eq(m / sp.sin(th) ** 2 * y.diff(t, 2) + m / sp.tan(th) * x.diff(t, 2),
                       -m * g + k / sp.sin(th) * ((y0 - y) / sp.sin(th) - q0)),
-            ]),  # accelerations compared; the derived y equation keeps cos²θ/sin²θ + 1 unsimplified
+            ], per_equation=True),
         ],
         simulation=Simulation(initial={x: 0, y: 0.7, x.diff(t): 0, y.diff(t): 0}, **sim),
         ranges=rng,
@@ -62,7 +62,7 @@ PROBLEMS = [
             EquationsOfMotion([
                 sp.Eq((Mt + m) * x.diff(t, 2) - m * sp.cos(th) * q.diff(t, 2), f),
                 sp.Eq(m * q.diff(t, 2) - m * sp.cos(th) * x.diff(t, 2), m * g * sp.sin(th) - k * (q - q0)),
-            ]),
+            ], per_equation=True),
         ],
         simulation=Simulation(params={p: v for p, v in sim["params"].items() if p != y0},
                               initial={x: 0, q: 0.6, x.diff(t): 0, q.diff(t): 0}, t_end=sim["t_end"]),

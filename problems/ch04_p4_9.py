@@ -37,7 +37,7 @@ PROBLEMS = [
                 sp.Eq(m1 * r1.diff(t, 2) - m1 * r1 * thd**2, S),
                 sp.Eq(m2 * r2.diff(t, 2) - m2 * r2 * thd**2, S),
                 sp.Eq(sp.diff((I + m1 * r1**2 + m2 * r2**2) * thd, t), 0),
-            ]),  # accelerations compared; derived equations keep sin²+cos² factors
+            ], per_equation=True),
         ],
         simulation=Simulation(params={m1: 1, m2: 2, I: 1, k: 50, c: 1},
                               initial={r1: 0.6, r2: 0.6, theta: 0, r1.diff(t): 0, r2.diff(t): 0, thd: 2}, t_end=3),
@@ -52,7 +52,7 @@ PROBLEMS = [
             EquationsOfMotion([
                 sp.Eq(m1 * r1.diff(t, 2) - m1 * r1 * w**2, S),
                 sp.Eq(m2 * r2.diff(t, 2) - m2 * r2 * w**2, S),
-            ]),
+            ], per_equation=True),
         ],
         simulation=Simulation(params={m1: 1, m2: 2, k: 50, c: 1, w: 2},
                               initial={r1: 0.6, r2: 0.6, r1.diff(t): 0, r2.diff(t): 0}, t_end=3),

@@ -76,3 +76,22 @@ def test_generated_source_is_straight_line_and_uses_cse():
     src = model.source
     assert "c0 =" in src and "def rhs(t, y, p):" in src
     assert "for " not in src and "solve" not in src  # unrolled LDL^T, no loops or library calls
+
+
+def test_numba_cache_reused_and_corruption_recovered(tmp_path, monkeypatch):
+    """The generated module is cached by a hash of its source; a corrupted numba cache is rebuilt."""
+    from lagrange.codegen.numba_backend import cache_dir
+
+    monkeypatch.setenv("LAGRANGE_CACHE_DIR", str(tmp_path))
+    s = n_link_pendulum(2)
+    y = np.array([0.3, -0.2, 0.1, 0.4])
+    first = s.compile({"g": 9.81}, backend="numba").fun(0.0, y)
+    modules = list(cache_dir().glob("rhs_*.py"))
+    assert len(modules) == 1
+    index_files = list(cache_dir().rglob("*.nbi")) + list(cache_dir().rglob("*.nbc"))
+    assert index_files, "numba wrote no cache"
+    for f in index_files:
+        f.write_bytes(b"garbage")
+    again = s.compile({"g": 9.81}, backend="numba").fun(0.0, y)
+    assert np.array_equal(first, again)
+    assert len(list(cache_dir().glob("rhs_*.py"))) == 1

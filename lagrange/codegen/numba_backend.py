@@ -52,8 +52,28 @@ def numba_rhs(source: str) -> Callable:
         with os.fdopen(fd, "w") as fh:
             fh.write(text)
         os.replace(tmp, path)
-    spec = importlib.util.spec_from_file_location(f"lagrange_rhs_{key}", path)
+    name = f"lagrange_rhs_{key}"
+    try:
+        return _load(name, path)
+    except Exception:  # noqa: BLE001 - a stale or corrupted numba cache entry: purge it and rebuild once
+        for folder in (path.parent, path.parent / "__pycache__"):
+            for stale in folder.glob(f"{path.stem}.*"):
+                if stale.suffix in (".nbi", ".nbc"):
+                    stale.unlink(missing_ok=True)
+        sys.modules.pop(name, None)
+        return _load(name, path)
+
+
+_SIGNATURE = "float64[::1](float64, float64[::1], float64[::1])"
+
+
+def _load(name: str, path: Path) -> Callable:
+    """Import the generated module under a real name (numba's cache records it) and compile eagerly,
+    so a broken cache shows up here, not in the middle of an integration."""
+    spec = importlib.util.spec_from_file_location(name, path)
     module = importlib.util.module_from_spec(spec)
     assert spec.loader is not None
+    sys.modules[name] = module
     spec.loader.exec_module(module)
+    module.rhs.compile(_SIGNATURE)
     return module.rhs

@@ -61,7 +61,8 @@ def bind_parameters(eqs: Equations, params: Mapping) -> np.ndarray:
     for n in wanted:
         if n in by_name:
             try:
-                v = float(sp.sympify(by_name[n]).evalf()) if isinstance(by_name[n], (str, sp.Basic)) else float(by_name[n])
+                raw = by_name[n]
+                v = float(sp.sympify(raw).evalf()) if isinstance(raw, (str, sp.Basic)) else float(raw)
             except (TypeError, ValueError, sp.SympifyError):
                 problems.append(f"parameter {n} = {by_name[n]!r} is not a number")
                 continue

@@ -24,24 +24,31 @@ def _sort_key(p: Problem):
     return (p.chapter, nums, p.id)
 
 
-@lru_cache(maxsize=1)
-def all_problems() -> tuple[Problem, ...]:
-    """Every problem of the corpus, by chapter and number."""
+def _module_names() -> list[str]:
     try:
         pkg = importlib.import_module(PACKAGE)
     except ImportError as exc:  # pragma: no cover - broken installation
         raise SpecError(f"the problem corpus ({PACKAGE}) is not installed: reinstall lagrange") from exc
+    return [info.name for info in pkgutil.iter_modules(pkg.__path__) if not info.name.startswith("_")]
+
+
+def _module_problems(name: str) -> list[Problem]:
+    mod = importlib.import_module(f"{PACKAGE}.{name}")
+    probs = getattr(mod, "PROBLEMS", None) or [getattr(mod, "PROBLEM", None)]
+    for p in probs:
+        if not isinstance(p, Problem):
+            raise SpecError(f"corpus module {name} defines no PROBLEM")
+    return list(probs)
+
+
+@lru_cache(maxsize=1)
+def all_problems() -> tuple[Problem, ...]:
+    """Every problem of the corpus, by chapter and number."""
     found: dict[str, Problem] = {}
-    for info in pkgutil.iter_modules(pkg.__path__):
-        if info.name.startswith("_"):
-            continue
-        mod = importlib.import_module(f"{PACKAGE}.{info.name}")
-        probs = getattr(mod, "PROBLEMS", None) or [getattr(mod, "PROBLEM", None)]
-        for p in probs:
-            if not isinstance(p, Problem):
-                raise SpecError(f"corpus module {info.name} defines no PROBLEM")
+    for name in _module_names():
+        for p in _module_problems(name):
             if p.id in found:
-                raise SpecError(f"problem id {p.id!r} is defined twice (in {info.name})")
+                raise SpecError(f"problem id {p.id!r} is defined twice (in {name})")
             found[p.id] = p
     return tuple(sorted(found.values(), key=_sort_key))
 
@@ -53,6 +60,14 @@ def problem_ids() -> list[str]:
 def get_problem(problem_id: str) -> Problem:
     """The problem with this id (case-insensitive); a SpecError suggests close ids otherwise."""
     key = problem_id.strip().lower()
+    # fast path: module chNN_<id> (variants "id-suffix" live in the module of "id"), so the CLI does not
+    # import the whole corpus to run one problem
+    stem = "_" + key.split("-")[0].replace(".", "_")
+    for name in _module_names():
+        if name.lower().endswith(stem):
+            for p in _module_problems(name):
+                if p.id.lower() == key:
+                    return p
     for p in all_problems():
         if p.id.lower() == key:
             return p

@@ -94,9 +94,8 @@ def run_switched(model, switches, t_span, z0, t_eval, events, kwargs, with_work)
     eqs0 = model.equations
     eqs, sigmas = switched_equations(eqs0, switches)
     base = dict(zip(eqs0.parameters, model.params))
-    sw_model = compile_equations(
-        eqs, {**base, **{s: 1.0 for s in sigmas}}, backend=model.backend if model.backend != "reference" else "python"
-    )
+    backend = model.backend if model.backend != "reference" else "python"
+    sw_model = compile_equations(eqs, {**base, **{s: 1.0 for s in sigmas}}, backend=backend)
     n = eqs.n
     n2 = 2 * n
     K = len(switches)
@@ -104,12 +103,13 @@ def run_switched(model, switches, t_span, z0, t_eval, events, kwargs, with_work)
     ys = sp.symbols(f"y0:{n2}", real=True)
     u_fn = sp.lambdify((ren[t], ys), [u.xreplace(ren) for u in switches], modules="math")
     grads = [
-        sp.lambdify((ren[t], ys), [sp.diff(u, s).xreplace(ren) for s in (*eqs.q, *eqs.qd)] + [sp.diff(u, t).xreplace(ren)], modules="math")
+        sp.lambdify((ren[t], ys), [sp.diff(u, s).xreplace(ren) for s in (*eqs.q, *eqs.qd, t)], modules="math")
         for u in switches
     ]
     pw = None
     if with_work:
-        pw = sp.lambdify((ren[t], ys, [ren[s] for s in eqs.parameters]), eqs.jacobi_rate.xreplace(ren), modules="math", cse=True)
+        ps = [ren[s] for s in eqs.parameters]
+        pw = sp.lambdify((ren[t], ys, ps), eqs.jacobi_rate.xreplace(ren), modules="math", cse=True)
     rhs = sw_model.rhs
     nparam = len(eqs0.parameters)
 
