@@ -15,7 +15,9 @@ from .errors import (
     SpecError,
 )
 from .model.bodies import Force, Particle
+from .model.constraints import Differential, Holonomic, IntegrableConstraintWarning, Nonholonomic
 from .model.coordinates import coordinates, delta, parameters
+from .model.eliminate import eliminate
 from .model.system import System
 from .printing import latex, pretty
 
@@ -29,6 +31,11 @@ __all__ = [
     "System",
     "Particle",
     "Force",
+    "Holonomic",
+    "Nonholonomic",
+    "Differential",
+    "IntegrableConstraintWarning",
+    "eliminate",
     "latex",
     "pretty",
     "LagrangeError",

@@ -55,6 +55,9 @@ def _cmd_derive(args) -> int:
     system = spec.system
     if spec.problem is not None:
         print(f"{spec.problem.id}: {spec.problem.title} ({spec.problem.source})")
+    if system is None:
+        print("this problem has no equations of motion (its answers are checked by `lagrange verify`)")
+        return 0
     if args.latex:
         for eq in system.equations():
             print(latex(eq))
@@ -74,6 +77,8 @@ def _cmd_simulate(args) -> int:
     from .spec.loader import load_spec
 
     spec = load_spec(args.spec)
+    if spec.system is None:
+        raise SpecError(f"{args.spec}: this problem has no equations of motion to simulate")
     params = {**spec.params, **_kv(args.param, "param")}
     initial = {**spec.initial, **_kv(args.initial, "initial")}
     t_end = args.t_end if args.t_end is not None else spec.t_end

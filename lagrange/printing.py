@@ -63,15 +63,23 @@ def _header(system) -> str:
 
     name = system.name or "system"
     coords = ", ".join(coordinate_name(q) for q in system.coordinates)
-    return f"{name}: {len(system.coordinates)} degree(s) of freedom ({coords})"
+    n, cons = len(system.coordinates), system.constraints
+    if not cons:
+        return f"{name}: {n} degree(s) of freedom ({coords})"
+    hol = sum(1 for c in cons if c.kind == "holonomic")
+    return (f"{name}: {n} coordinates ({coords}), {len(cons)} constraint(s) ({hol} holonomic): "
+            f"{n - hol} degree(s) of freedom in configuration, {n - len(cons)} in velocity")
 
 
 def format_equations(system) -> str:
     """The system's equations of motion as terminal text, one block per coordinate."""
     lines = [_header(system)]
-    for q, eq in zip(system.coordinates, system.equations()):
+    eqs = system.equations()
+    labels = [f"[{q.func.__name__}]" for q in system.coordinates]
+    labels += [f"[constraint {name}, multiplier λ{k + 1}]" for k, name in enumerate(system.derived.constraint_names)]
+    for label, eq in zip(labels, eqs):
         lines.append("")
-        lines.append(f"[{q.func.__name__}]")
+        lines.append(label)
         lines.append(pretty(eq))
     return "\n".join(lines)
 

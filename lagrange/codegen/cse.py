@@ -36,10 +36,17 @@ class FusedExpressions:
     temporaries: tuple  # ((Symbol, expr), ...)
     mass_upper: dict  # {(i, j): expr} for i <= j, structural zeros omitted
     forcing: tuple  # n expressions
+    constraint_matrix: dict = None  # {(r, j): expr} structural zeros omitted
+    constraint_rhs: tuple = ()  # c_r with A q̈ = c (Baumgarte terms included when requested)
+
+    @property
+    def m(self) -> int:
+        return len(self.constraint_rhs)
 
 
-def fuse(eqs: Equations, *, extra: tuple = ()) -> tuple[FusedExpressions, tuple]:
-    """Run one CSE over M's upper triangle, f and ``extra`` expressions.
+def fuse(eqs: Equations, *, extra: tuple = (), constraint_rhs=None) -> tuple[FusedExpressions, tuple]:
+    """Run one CSE over M's upper triangle, f, the constraint blocks A and c (``constraint_rhs``
+    overrides c, e.g. with Baumgarte terms) and ``extra`` expressions.
 
     Floats are introduced here only: exact rationals stay exact until printed.
     Returns the fused expressions and the CSE'd ``extra`` expressions.
@@ -49,13 +56,21 @@ def fuse(eqs: Equations, *, extra: tuple = ()) -> tuple[FusedExpressions, tuple]
     idx = [(i, j) for i in range(n) for j in range(i, n) if eqs.mass_matrix[i, j] != 0]
     exprs = [eqs.mass_matrix[i, j].xreplace(ren) for i, j in idx]
     exprs += [e.xreplace(ren) for e in eqs.forcing]
+    A = eqs.constraint_matrix
+    aidx = [(r, j) for r in range(eqs.m) for j in range(n) if A[r, j] != 0]
+    crhs = list(constraint_rhs) if constraint_rhs is not None else list(eqs.constraint_rhs)
+    exprs += [A[r, j].xreplace(ren) for r, j in aidx]
+    exprs += [sp.sympify(e).xreplace(ren) for e in crhs]
     exprs += [sp.sympify(e).xreplace(ren) for e in extra]
     repl, red = sp.cse(exprs, symbols=sp.numbered_symbols("c", real=True), optimizations="basic")
     k = len(idx)
+    ka = k + n + len(aidx)
     fused = FusedExpressions(
         n=n,
         temporaries=tuple(repl),
         mass_upper={ij: e for ij, e in zip(idx, red[:k])},
         forcing=tuple(red[k : k + n]),
+        constraint_matrix={rj: e for rj, e in zip(aidx, red[k + n : ka])},
+        constraint_rhs=tuple(red[ka : ka + eqs.m]),
     )
-    return fused, tuple(red[k + n :])
+    return fused, tuple(red[ka + eqs.m :])

@@ -21,6 +21,7 @@ import importlib.util
 import math
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
+from functools import cached_property
 
 import numpy as np
 import sympy as sp
@@ -32,7 +33,7 @@ from ..model.coordinates import coordinate_name
 from .cse import fuse, rename_map
 from .source import rhs_source
 
-__all__ = ["NumericModel", "compile_equations", "bind_parameters", "BACKENDS"]
+__all__ = ["NumericModel", "ConstraintFunctions", "compile_equations", "bind_parameters", "BACKENDS"]
 
 BACKENDS = ("python", "numba", "reference", "auto")
 
@@ -84,14 +85,15 @@ class NumericModel:
     params : ndarray, shape (k,) — values in the order of ``equations.parameters``
     backend : str
     source : str — the generated source of ``rhs`` (empty for the reference backend)
-    rhs : callable ``rhs(t, y, p) -> dy`` with ``y`` of shape (2n,)
+    dynamics : callable ``dynamics(t, y, p) -> [q̇, q̈, λ]`` (``[q̇, q̈]`` without constraints)
+    rhs : callable ``rhs(t, y, p) -> [q̇, q̈]``, shape (2n,)
     """
 
     equations: Equations
     params: np.ndarray
     backend: str
     source: str
-    rhs: Callable
+    dynamics: Callable
     _aux: Callable = field(repr=False)
     _mass_forcing: Callable = field(repr=False)
 
@@ -99,10 +101,31 @@ class NumericModel:
     def n(self) -> int:
         return self.equations.n
 
+    @property
+    def m(self) -> int:
+        """Number of constraints (multipliers)."""
+        return self.equations.m
+
     def __post_init__(self):
         # the python backend unpacks p into Python floats (fast scalar arithmetic); numba wants an array
         call = tuple(float(v) for v in self.params) if self.backend == "python" else self.params
         object.__setattr__(self, "_pcall", call)
+        if self.equations.m:
+            dyn, n2 = self.dynamics, 2 * self.n
+
+            def rhs(t, y, p):
+                return dyn(t, y, p)[:n2]
+
+            object.__setattr__(self, "rhs", rhs)
+        else:
+            object.__setattr__(self, "rhs", self.dynamics)
+
+    def multipliers(self, t: float, y: np.ndarray) -> np.ndarray:
+        """λ at ``(t, y)``, shape (m,): ``Aᵀλ`` is the generalized force of the constraints."""
+        try:
+            return np.asarray(self.dynamics(t, y, self._pcall)[2 * self.n :], dtype=float)
+        except ZeroDivisionError:
+            raise self.singular_error(t, y) from None
 
     def fun(self, t: float, y: np.ndarray) -> np.ndarray:
         """``dy/dt`` at ``(t, y)`` with the bound parameters (the form scipy's solvers call)."""
@@ -112,8 +135,17 @@ class NumericModel:
             raise self.singular_error(t, y) from None
 
     def singular_error(self, t: float, y: np.ndarray) -> SingularMassMatrixError:
-        """An error naming the coordinates involved in the singular mass matrix at ``(t, y)``."""
+        """An error naming the coordinates involved in the singular mass matrix (or, with constraints,
+        the constraints whose Jacobian rows are dependent) at ``(t, y)``."""
         M, _ = self.mass_and_forcing(t, y)
+        if self.m and np.linalg.cond(M) < 1e12:
+            A = self.constraint_functions.matrix(t, np.asarray(y)[: self.n])
+            names = self.equations.constraint_names
+            state = ", ".join(f"{coordinate_name(c)}={y[i]:.6g}" for i, c in enumerate(self.equations.coordinates))
+            return SingularMassMatrixError(
+                f"the constraints {', '.join(names)} are dependent at t={t:.6g} ({state}): the constraint "
+                f"Jacobian has rank {np.linalg.matrix_rank(A)} < {self.m}. Remove redundant constraints"
+            )
         w, v = np.linalg.eigh(M)
         k = int(np.argmin(np.abs(w)))
         involved = [coordinate_name(c) for c, comp in zip(self.equations.coordinates, v[:, k]) if abs(comp) > 1e-6]
@@ -123,6 +155,11 @@ class NumericModel:
             f"coordinates involved: {', '.join(involved)}. A massless point or a coordinate that does "
             "not appear in T gives no inertia: eliminate it (statics) or give it mass"
         )
+
+    @cached_property
+    def constraint_functions(self) -> ConstraintFunctions:
+        """Numeric φ, A, b for projection and violation reports (built on first use)."""
+        return ConstraintFunctions(self.equations, self.params)
 
     def mass_and_forcing(self, t: float, y) -> tuple[np.ndarray, np.ndarray]:
         """Numeric ``M`` (n, n) and ``f`` (n,) at one state."""
@@ -138,7 +175,11 @@ class NumericModel:
         t = np.asarray(t, dtype=float)
         y = np.asarray(y, dtype=float)
         cols = [y[:, i] for i in range(y.shape[1])]
-        vals = self._aux(t, cols, self.params)
+        lam = [np.zeros_like(t)] * self.m
+        if self.m and lam_required(self.equations):
+            L = np.array([self.multipliers(ti, yi) for ti, yi in zip(t, y)]).reshape(len(t), self.m)
+            lam = [L[:, k] for k in range(self.m)]
+        vals = self._aux(t, cols, self.params, lam)
         names = ("T", "V", "jacobi", "power", "T2", "T0")
         out = {k: np.broadcast_to(np.asarray(v, dtype=float), t.shape).copy() for k, v in zip(names, vals)}
         out["energy"] = out["T"] + out["V"]
@@ -158,13 +199,25 @@ def _reference_functions(eqs: Equations):
     def mass_forcing(t_, y, p):
         return mf(t_, list(y), list(p))
 
+    m = eqs.m
+    Ac = sp.lambdify((tt, ys, ps), (eqs.constraint_matrix.xreplace(ren),
+                                    sp.Matrix(eqs.constraint_rhs).xreplace(ren)), modules="numpy") if m else None
+
     def rhs(t_, y, p):
         Mv, fv = mass_forcing(t_, y, p)
         Mv = np.array(Mv, dtype=float)
         if not np.all(np.isfinite(Mv)) or np.linalg.cond(Mv) > 1e15:
             raise ZeroDivisionError("mass matrix is singular")
-        acc = np.linalg.solve(Mv, np.array(fv, dtype=float).ravel())
-        return np.concatenate([np.asarray(y[n:], dtype=float), acc])
+        fv = np.array(fv, dtype=float).ravel()
+        if not m:
+            return np.concatenate([np.asarray(y[n:], dtype=float), np.linalg.solve(Mv, fv)])
+        Av, cv = Ac(t_, list(y), list(p))
+        Av = np.array(Av, dtype=float).reshape(m, n)
+        K = np.block([[Mv, -Av.T], [Av, np.zeros((m, m))]])
+        if np.linalg.cond(K) > 1e15:
+            raise ZeroDivisionError("constraint Jacobian is rank deficient")
+        sol = np.linalg.solve(K, np.concatenate([fv, np.array(cv, dtype=float).ravel()]))
+        return np.concatenate([np.asarray(y[n:], dtype=float), sol])
 
     return rhs, mass_forcing
 
@@ -178,12 +231,54 @@ def _aux_function(eqs: Equations):
     qd = sp.Matrix(eqs.qd)
     T2 = (qd.T * eqs.mass_matrix * qd)[0, 0] / 2
     exprs = [e.xreplace(ren) for e in (eqs.kinetic, eqs.potential, eqs.jacobi, eqs.jacobi_rate, T2, T0)]
-    f = sp.lambdify((ren[t], ys, ps), exprs, modules="numpy", cse=True)
+    f = sp.lambdify((ren[t], ys, ps, list(eqs.multipliers)), exprs, modules="numpy", cse=True)
 
-    def aux(t_, cols, p):
-        return f(t_, cols, list(p))
+    def aux(t_, cols, p, lam):
+        return f(t_, cols, list(p), list(lam))
 
     return aux
+
+
+def lam_required(eqs: Equations) -> bool:
+    """True when the power balance needs λ (moving constraints do work)."""
+    return bool(eqs.m) and bool(eqs.jacobi_rate.free_symbols & set(eqs.multipliers))
+
+
+class ConstraintFunctions:
+    """Numeric constraint pieces at bound parameters: ``phi(t, q)`` of the holonomic constraints,
+    their Jacobian ``holonomic_matrix(t, q)``, and ``matrix(t, q)`` / ``bias(t, q)`` (A, b) of all."""
+
+    def __init__(self, eqs: Equations, params: np.ndarray):
+        ren = rename_map(eqs)
+        n = eqs.n
+        qs = sp.symbols(f"y0:{n}", real=True)
+        ps = [ren[s] for s in eqs.parameters]
+        self.holonomic = [k for k, ph in enumerate(eqs.constraint_positions) if ph is not None]
+        phis = [eqs.constraint_positions[k].xreplace(ren) for k in self.holonomic]
+        Ah = sp.Matrix([[sp.diff(ph, qj) for qj in qs] for ph in phis]) if phis else sp.zeros(0, n)
+        args = (ren[t], qs, ps)
+        self._phi = sp.lambdify(args, phis, modules="math", cse=True)
+        self._Ah = sp.lambdify(args, Ah, modules="numpy", cse=True)
+        self._A = sp.lambdify(args, eqs.constraint_matrix.xreplace(ren), modules="numpy", cse=True)
+        self._b = sp.lambdify(args, [e.xreplace(ren) for e in eqs.constraint_bias], modules="math", cse=True)
+        self._p = list(params)
+        self.n, self.m = n, eqs.m
+
+    def phi(self, t, q) -> np.ndarray:
+        return np.array(self._phi(t, list(q), self._p), dtype=float)
+
+    def holonomic_matrix(self, t, q) -> np.ndarray:
+        return np.array(self._Ah(t, list(q), self._p), dtype=float).reshape(len(self.holonomic), self.n)
+
+    def matrix(self, t, q) -> np.ndarray:
+        return np.array(self._A(t, list(q), self._p), dtype=float).reshape(self.m, self.n)
+
+    def bias(self, t, q) -> np.ndarray:
+        return np.array(self._b(t, list(q), self._p), dtype=float)
+
+    def velocity_residual(self, t, y) -> np.ndarray:
+        q, qd = y[: self.n], y[self.n :]
+        return self.matrix(t, q) @ qd + self.bias(t, q)
 
 
 class _Lazy:
@@ -206,8 +301,12 @@ def _python_rhs(source: str) -> Callable:
     return namespace["rhs"]
 
 
-def compile_equations(eqs: Equations, params: Mapping, *, backend: str = "python") -> NumericModel:
+def compile_equations(eqs: Equations, params: Mapping, *, backend: str = "python",
+                      constraint_rhs=None) -> NumericModel:
     """Generate numeric code for ``eqs`` and bind ``params``.
+
+    ``constraint_rhs`` replaces ``c`` in ``A q̈ = c`` (Baumgarte stabilization,
+    :func:`lagrange.integrate.constrained.baumgarte_rhs`).
 
     Raises
     ------
@@ -226,7 +325,7 @@ def compile_equations(eqs: Equations, params: Mapping, *, backend: str = "python
     if backend == "reference":
         ref_rhs, mass_forcing = _reference_functions(eqs)
         return NumericModel(eqs, p, "reference", "", ref_rhs, aux, mass_forcing)
-    fused, _ = fuse(eqs)
+    fused, _ = fuse(eqs, constraint_rhs=constraint_rhs)
     if backend == "python":
         src = rhs_source(fused, n_params=len(p), flavour="python")
         return NumericModel(eqs, p, "python", src, _python_rhs(src), aux, mass_forcing)

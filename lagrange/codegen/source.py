@@ -37,51 +37,86 @@ def print_expr(expr) -> str:
     return _PRINTER.doprint(expr)
 
 
-def _ldl_lines(n: int, upper: dict) -> tuple[list[str], list[str]]:
-    """Straight-line LDLᵀ factorization and solve; returns (lines, names of the solution)."""
+def _ldl_factor(n: int, entry, tag: str, what: str) -> tuple[list[str], dict, list[str]]:
+    """Straight-line LDLᵀ of a symmetric matrix whose upper entries are named by ``entry(i, j)``
+    (None for a structural zero). Returns (lines, names of L's nonzeros, names of D)."""
     lines: list[str] = []
-
-    def a(i, j):
-        i, j = min(i, j), max(i, j)
-        return f"a{i}_{j}" if (i, j) in upper else None
-
-    nz = {}  # structural nonzeros of L (strictly lower): nz[(i, j)] -> name
-    d = {}
+    nz: dict = {}
+    d: list[str] = []
     for j in range(n):
-        terms = [f"{nz[(j, k)]}*{nz[(j, k)]}*{d[k]}" for k in range(j) if (j, k) in nz]
-        ajj = a(j, j)
+        ajj = entry(j, j)
         if ajj is None:
-            lines.append("raise ZeroDivisionError('mass matrix has a zero diagonal entry')")
-            return lines, []
-        expr = ajj + "".join(f" - {s}" for s in terms)
-        lines.append(f"d{j} = {expr}")
-        lines.append(f"if not (d{j} > 1e-13 * abs({ajj})):")
-        lines.append("    raise ZeroDivisionError('mass matrix is not positive definite')")
-        d[j] = f"d{j}"
+            lines.append(f"raise ZeroDivisionError('{what} has a zero diagonal entry')")
+            return lines, nz, d
+        terms = [f"{nz[(j, k)]}*{nz[(j, k)]}*{d[k]}" for k in range(j) if (j, k) in nz]
+        lines.append(f"{tag}d{j} = {ajj}{''.join(f' - {x}' for x in terms)}")
+        lines.append(f"if not ({tag}d{j} > 1e-13 * abs({ajj})):")
+        lines.append(f"    raise ZeroDivisionError('{what} is not positive definite')")
+        d.append(f"{tag}d{j}")
         for i in range(j + 1, n):
-            aij = a(i, j)
+            aij = entry(min(i, j), max(i, j))
             terms = [f"{nz[(i, k)]}*{nz[(j, k)]}*{d[k]}" for k in range(j) if (i, k) in nz and (j, k) in nz]
             if aij is None and not terms:
                 continue
             head = aij if aij is not None else "0.0"
-            lines.append(f"l{i}_{j} = ({head}{''.join(f' - {s}' for s in terms)})/d{j}")
-            nz[(i, j)] = f"l{i}_{j}"
-    # forward substitution L z = b
+            lines.append(f"{tag}l{i}_{j} = ({head}{''.join(f' - {x}' for x in terms)})/{tag}d{j}")
+            nz[(i, j)] = f"{tag}l{i}_{j}"
+    return lines, nz, d
+
+
+def _ldl_solve(n: int, nz: dict, d: list[str], rhs: list, out: list[str], tag: str) -> list[str]:
+    """Lines solving L D Lᵀ x = rhs (``rhs[i]`` a name or None for zero) into the names ``out``."""
+    lines = []
+    z = []
     for i in range(n):
-        terms = [f"{nz[(i, k)]}*z{k}" for k in range(i) if (i, k) in nz]
-        lines.append(f"z{i} = b{i}{''.join(f' - {s}' for s in terms)}")
-    # diagonal and back substitution Lᵀ x = D⁻¹ z
+        terms = [f"{nz[(i, k)]}*{z[k]}" for k in range(i) if (i, k) in nz and z[k] is not None]
+        if rhs[i] is None and not terms:
+            z.append(None)
+            continue
+        head = rhs[i] if rhs[i] is not None else "0.0"
+        lines.append(f"{tag}z{i} = {head}{''.join(f' - {x}' for x in terms)}")
+        z.append(f"{tag}z{i}")
     for i in reversed(range(n)):
-        terms = [f"{nz[(k, i)]}*x{k}" for k in range(i + 1, n) if (k, i) in nz]
-        lines.append(f"x{i} = z{i}/d{i}{''.join(f' - {s}' for s in terms)}")
-    return lines, [f"x{i}" for i in range(n)]
+        terms = [f"{nz[(k, i)]}*{out[k]}" for k in range(i + 1, n) if (k, i) in nz]
+        head = f"{z[i]}/{d[i]}" if z[i] is not None else "0.0"
+        lines.append(f"{out[i]} = {head}{''.join(f' - {x}' for x in terms)}")
+    return lines
+
+
+def _constrained_lines(n: int, m: int, upper: dict, A: dict) -> tuple[list[str], list[str], list[str]]:
+    """q̈ and λ from ``M q̈ = f + Aᵀλ``, ``A q̈ = c`` by the Schur complement ``S = A M⁻¹ Aᵀ``.
+
+    Names: M upper ``a{i}_{j}``, f ``b{i}``, A ``k{r}_{j}`` (``A`` maps present (r, j)), c ``e{r}``.
+    """
+    lines, nz, d = _ldl_factor(n, lambda i, j: f"a{i}_{j}" if (i, j) in upper else None, "", "mass matrix")
+    lines += _ldl_solve(n, nz, d, [f"b{i}" for i in range(n)], [f"xf{i}" for i in range(n)], "f")
+    for r in range(m):
+        rhs = [f"k{r}_{j}" if (r, j) in A else None for j in range(n)]
+        lines += _ldl_solve(n, nz, d, rhs, [f"xa{r}_{j}" for j in range(n)], f"a{r}")
+    for r in range(m):
+        for s_ in range(r, m):
+            terms = [f"k{r}_{j}*xa{s_}_{j}" for j in range(n) if (r, j) in A]
+            lines.append(f"s{r}_{s_} = {' + '.join(terms) if terms else '0.0'}")
+        terms = [f"k{r}_{j}*xf{j}" for j in range(n) if (r, j) in A]
+        lines.append(f"rr{r} = e{r}{''.join(f' - {x}' for x in terms)}")
+    fl, snz, sd = _ldl_factor(m, lambda i, j: f"s{i}_{j}", "S", "constraint matrix A M^-1 A^T (redundant constraints?)")
+    lines += fl
+    lam = [f"lam{r}" for r in range(m)]
+    lines += _ldl_solve(m, snz, sd, [f"rr{r}" for r in range(m)], lam, "S")
+    acc = []
+    for i in range(n):
+        terms = [f"xa{r}_{i}*lam{r}" for r in range(m)]
+        lines.append(f"x{i} = xf{i}{''.join(f' + {x}' for x in terms)}")
+        acc.append(f"x{i}")
+    return lines, acc, lam
 
 
 def rhs_source(fused: FusedExpressions, *, n_params: int, flavour: str = "python", name: str = "rhs") -> str:
     """Source text of ``rhs(t, y, p)``.
 
     ``flavour="python"`` unpacks ``y.tolist()`` (fast Python floats) and returns a list;
-    ``flavour="numba"`` indexes arrays and returns a new ``numpy`` array.
+    ``flavour="numba"`` indexes arrays and returns a new ``numpy`` array. With constraints the result is
+    ``[q̇, q̈, λ]`` (length 2n + m), without them ``[q̇, q̈]``.
     """
     n = fused.n
     body: list[str] = []
@@ -97,13 +132,23 @@ def rhs_source(fused: FusedExpressions, *, n_params: int, flavour: str = "python
     body += [f"{s} = {print_expr(e)}" for s, e in fused.temporaries]
     body += [f"a{i}_{j} = {print_expr(e)}" for (i, j), e in fused.mass_upper.items()]
     body += [f"b{i} = {print_expr(e)}" for i, e in enumerate(fused.forcing)]
-    ldl, xs = _ldl_lines(n, fused.mass_upper)
-    body += ldl
-    outs = ys[n:] + xs
+    if fused.m:
+        body += [f"k{r}_{j} = {print_expr(e)}" for (r, j), e in fused.constraint_matrix.items()]
+        body += [f"e{r} = {print_expr(e)}" for r, e in enumerate(fused.constraint_rhs)]
+        lines, xs, lam = _constrained_lines(n, fused.m, fused.mass_upper, fused.constraint_matrix)
+        body += lines
+        outs = ys[n:] + xs + lam
+    else:
+        lines, nz, d = _ldl_factor(n, lambda i, j: f"a{i}_{j}" if (i, j) in fused.mass_upper else None, "",
+                                   "mass matrix")
+        body += lines
+        xs = [f"x{i}" for i in range(n)]
+        body += _ldl_solve(n, nz, d, [f"b{i}" for i in range(n)], xs, "")
+        outs = ys[n:] + xs
     if flavour == "python":
         body.append(f"return [{', '.join(outs)}]")
     else:
-        body.append(f"out = np.empty({2 * n})")
+        body.append(f"out = np.empty({len(outs)})")
         body += [f"out[{k}] = {v}" for k, v in enumerate(outs)]
         body.append("return out")
     return f"def {name}(t, y, p):\n" + "\n".join("    " + line for line in body) + "\n"

@@ -3,6 +3,7 @@
 from .answers import (
     Answer,
     ConservedMomenta,
+    ConstraintForce,
     EnergySplit,
     EquationsOfMotion,
     GeneralizedForces,
@@ -21,6 +22,7 @@ from .registry import all_problems, get_problem, problem_ids
 __all__ = [
     "Answer",
     "ConservedMomenta",
+    "ConstraintForce",
     "EnergySplit",
     "EquationsOfMotion",
     "GeneralizedForces",

@@ -32,6 +32,7 @@ __all__ = [
     "JacobiIntegral",
     "Quantity",
     "TrajectoryValues",
+    "ConstraintForce",
 ]
 
 
@@ -55,6 +56,11 @@ class Answer:
         raise NotImplementedError
 
     def _agree(self, system, a, b, what, ranges, rtol=1e-10):
+        if system is None:  # a problem without dynamics (e.g. moments of inertia): compare as expressions
+            syms = sp.sympify(a).free_symbols | sp.sympify(b).free_symbols
+            params = [s for s in syms if s.is_positive]
+            agree(a, b, list(syms), rtol=rtol, ranges=ranges, parameters=params, what=what)
+            return
         eqs = system.derived
         c = system.coordinates
         agree(to_symbols(a, c), to_symbols(b, c), _state_symbols(eqs), rtol=rtol, ranges=ranges,
@@ -80,6 +86,9 @@ class EquationsOfMotion(Answer):
         eqs = system.derived
         c = system.coordinates
         n = eqs.n
+        if eqs.m:
+            raise Mismatch("EquationsOfMotion compares unconstrained equations: check eliminate(system, ...) "
+                           "or use ConstraintForce for the multiplier form")
         if len(self.equations) != n:
             raise Mismatch(f"book gives {len(self.equations)} equations, system has {n} coordinates")
         R = sp.Matrix([to_symbols(_residual(e), c) for e in self.equations])
@@ -264,7 +273,8 @@ class Quantity(Answer):
 
     Use for results such as small-oscillation periods, equilibrium positions or acceleration
     components. ``compute`` must use the library (the system's derived matrices, etc.), never restate
-    the answer.
+    the answer. For a problem without a system (``system=None``, e.g. moments of inertia), ``compute``
+    receives None and the two sides are compared over their free symbols.
     """
 
     name: str
@@ -312,3 +322,57 @@ class TrajectoryValues(Answer):
             err = np.max(np.abs(got - np.asarray(vals, dtype=float)))
             if not err <= self.tolerance:
                 raise Mismatch(f"{q}: simulated {got} vs expected {list(vals)} (max error {err:.3g})")
+
+
+@dataclass(frozen=True)
+class ConstraintForce(Answer):
+    """A force of constraint, checked along a simulated trajectory of the multiplier formulation.
+
+    ``expected`` is the book's expression in the coordinates, velocities, accelerations (``q.diff(t, 2)``,
+    evaluated from the simulated motion), parameters and t. It is compared with the multiplier λ of
+    ``constraint`` (by name), or, with ``coordinate=q``, with the generalized force of constraint on q,
+    ``(Aᵀλ)_q`` — Wells' 𝓕_q of the freed superfluous coordinate (eq. 12.3). Agreement to ``rtol``
+    relative to the largest value along the run.
+    """
+
+    constraint: str
+    expected: sp.Expr
+    params: Mapping
+    initial: Mapping
+    t_end: float
+    coordinate: object = None
+    rtol: float = 1e-6
+    description: str = "force of constraint"
+
+    def check(self, system, ranges=None):
+        eqs = system.derived
+        if self.constraint not in eqs.constraint_names:
+            raise Mismatch(f"no constraint named {self.constraint!r} (have {', '.join(eqs.constraint_names)})")
+        k = eqs.constraint_names.index(self.constraint)
+        sol = system.simulate(self.t_end, self.initial, self.params, rtol=1e-11, atol=1e-12, n_points=41)
+        lam = sol.multipliers
+        if self.coordinate is not None:
+            j = system.coordinates.index(self.coordinate)
+            A = np.array([sol.model.constraint_functions.matrix(ti, yi[: eqs.n])[k, j]
+                          for ti, yi in zip(sol.t, sol.y)])
+            got = A * lam[:, k]
+        else:
+            got = lam[:, k]
+        c = system.coordinates
+        expr = to_symbols(sp.sympify(self.expected), c)
+        syms = [*eqs.q, *eqs.qd, *eqs.qdd, t]
+        values = {s_.name: v for s_, v in self.params.items()} if self.params else {}
+        par = {p: float(values.get(p.name, self.params.get(p, 0.0) if hasattr(self.params, "get") else 0.0))
+               for p in expr.free_symbols if p not in syms}
+        missing = [p.name for p in par if p.name not in values]
+        if missing:
+            raise Mismatch(f"parameter values missing for {', '.join(missing)}")
+        fn = sp.lambdify(syms, expr.subs(par), modules="numpy")
+        cols = [sol.y[:, i] for i in range(2 * eqs.n)] + [sol.accelerations[:, i] for i in range(eqs.n)] + [sol.t]
+        want = np.broadcast_to(np.asarray(fn(*cols), dtype=float), got.shape)
+        scale = max(float(np.max(np.abs(want))), float(np.max(np.abs(got))), 1e-30)
+        err = float(np.max(np.abs(got - want)))
+        if not err <= self.rtol * scale:
+            i = int(np.argmax(np.abs(got - want)))
+            raise Mismatch(f"{self.constraint}: derived {got[i]:.10g} vs book {want[i]:.10g} at t={sol.t[i]:.4g} "
+                           f"(max error {err:.3g}, scale {scale:.3g})")

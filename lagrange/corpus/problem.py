@@ -39,7 +39,7 @@ class Problem:
     title : one line
     chapter : int
     source : citation, e.g. ``"Wells, Example 3.2"``
-    system : the System in the book's coordinates
+    system : the System in the book's coordinates, or None for a problem without dynamics (ch. 7)
     answers : the book's answers (after documented corrections)
     correction : "" or the misprint, the corrected form and why it is right
     units : units of the numbers (Wells is unit-agnostic; Sec. 1.9 uses CGS)

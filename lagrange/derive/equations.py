@@ -30,7 +30,10 @@ class Equations:
     nonconservative : tuple — ``applied + dissipative``
     kinetic, potential, power_function, rayleigh : the scalar functions, in symbols
     jacobi : ``h = Σ q̇ ∂L/∂q̇ − L``
-    jacobi_rate : ``dh/dt = −∂L/∂t + Σ q̇ (F_q + ∂P/∂q̇ − ∂D/∂q̇)`` (power balance)
+    jacobi_rate : ``dh/dt = −∂L/∂t + Σ q̇ (F_q + ∂P/∂q̇ − ∂D/∂q̇ + (Aᵀλ)_q)`` (power balance; the last
+        term is the power of moving constraints and contains the multiplier symbols)
+    constraint_* : the velocity-level constraints ``A q̇ + b = 0``, their derivative ``A q̈ = c`` and, for
+        holonomic ones, ``φ(q, t) = 0``; ``multipliers`` are the λ with ``M q̈ = f + Aᵀλ``
     """
 
     coordinates: tuple
@@ -52,11 +55,24 @@ class Equations:
     jacobi: sp.Expr
     jacobi_rate: sp.Expr
     name: str = ""
+    # --- constraints (empty when there are none); see lagrange.model.constraints -------------------
+    constraint_names: tuple = ()
+    constraint_matrix: sp.ImmutableMatrix = sp.ImmutableMatrix(0, 0, [])  # A (m, n), g = A q̇ + b
+    constraint_bias: tuple = ()  # b_k(q, t)
+    constraint_rhs: tuple = ()  # c_k(q, q̇, t) with A q̈ = c
+    constraint_positions: tuple = ()  # φ_k(q, t) for holonomic constraints, None for non-holonomic
+    multipliers: tuple = ()  # λ_k symbols; the generalized constraint force is Aᵀλ
+    unilateral: tuple = ()  # True where the constraint may only push (λ_k ≥ 0)
 
     @property
     def n(self) -> int:
         """Number of degrees of freedom."""
         return len(self.q)
+
+    @property
+    def m(self) -> int:
+        """Number of constraints."""
+        return len(self.constraint_names)
 
     @property
     def is_autonomous(self) -> bool:
@@ -67,5 +83,6 @@ class Equations:
 
     @property
     def is_conservative(self) -> bool:
-        """True when the Jacobi integral is conserved identically (no dissipation, forcing or explicit t)."""
+        """True when the Jacobi integral is conserved identically (no dissipation, forcing, explicit t or
+        moving constraints)."""
         return self.jacobi_rate == 0

@@ -29,6 +29,7 @@ from ..model.coordinates import (
     velocity_symbol,
 )
 from .equations import Equations
+from .multipliers import constraint_blocks
 
 __all__ = [
     "lagrange_equations",
@@ -86,9 +87,15 @@ def lagrange_equations(system) -> Equations:
     L = T - V
     jacobi = sum((v * d for v, d in zip(qd, dT_dqd)), sp.S.Zero) - L
     jacobi_rate = -sp.diff(L, t) + sum((v * Q for v, Q in zip(qd, nonconservative)), sp.S.Zero)
+    blocks = constraint_blocks(system.constraints, coords, q, qd) if system.constraints else {}
+    if blocks:
+        A, lam = blocks["constraint_matrix"], blocks["multipliers"]
+        # power of the constraint forces, q̇ᵀAᵀλ (= −λᵀb on the constraint manifold: moving constraints)
+        jacobi_rate += sum((lam[k] * A[k, j] * qd[j] for k in range(A.rows) for j in range(n)), sp.S.Zero)
 
     internal = set(q) | set(qd) | set(qdd) | {t}
-    everything = [T, V, P, D, *F]
+    everything = [T, V, P, D, *F] + [to_symbols(c.velocity, coords) for c in system.constraints]
+    everything += [to_symbols(c.position, coords) for c in system.constraints if c.position is not None]
     params = set().union(*(e.free_symbols for e in everything)) - internal
     return Equations(
         coordinates=tuple(coords),
@@ -110,6 +117,7 @@ def lagrange_equations(system) -> Equations:
         jacobi=jacobi,
         jacobi_rate=jacobi_rate,
         name=system.name,
+        **blocks,
     )
 
 
@@ -177,7 +185,8 @@ def _tidy(expr, collect_in=()):
 def book_form(eqs: Equations) -> list[sp.Eq]:
     r"""Wells' printed form per coordinate, in the coordinate functions.
 
-    Left: ``Σ_j M_rj q̈_j + (rest of d/dt ∂T/∂q̇ − ∂T/∂q) + ∂V/∂q``; right: ``F_q + ∂P/∂q̇ − ∂D/∂q̇``.
+    Left: ``Σ_j M_rj q̈_j + (rest of d/dt ∂T/∂q̇ − ∂T/∂q) + ∂V/∂q``; right: ``F_q + ∂P/∂q̇ − ∂D/∂q̇``
+    plus ``Σ_k λ_k ∂g_k/∂q̇_r`` with constraints, followed by the m constraint equations.
     """
     out = []
     n = eqs.n
@@ -189,7 +198,19 @@ def book_form(eqs: Equations) -> list[sp.Eq]:
         rest = eqs.inertial[i] - sum((eqs.mass_matrix[i, j] * eqs.qdd[j] for j in range(n)), sp.S.Zero)
         lhs = acc + _tidy(rest + eqs.potential_gradient[i], eqs.qd)
         rhs = _tidy(eqs.nonconservative[i], eqs.qd)
+        rhs += sum((_tidy(eqs.constraint_matrix[k, i]) * lam for k, lam in enumerate(eqs.multipliers)), sp.S.Zero)
         out.append(sp.Eq(to_functions(lhs, eqs.coordinates), to_functions(rhs, eqs.coordinates)))
+    return out + constraint_equations(eqs)
+
+
+def constraint_equations(eqs: Equations) -> list[sp.Eq]:
+    """The constraints as printed by Wells: ``φ(q, t) = 0`` (holonomic) or ``Σ a q̇ + a_t = 0``."""
+    out = []
+    qd = sp.Matrix(eqs.qd)
+    for k in range(eqs.m):
+        phi = eqs.constraint_positions[k]
+        g = phi if phi is not None else (eqs.constraint_matrix[k, :] * qd)[0, 0] + eqs.constraint_bias[k]
+        out.append(sp.Eq(to_functions(g, eqs.coordinates), 0))
     return out
 
 

@@ -15,12 +15,14 @@ import sympy as sp
 from scipy.integrate import solve_ivp
 
 from ..codegen.cse import rename_map
-from ..codegen.numeric import NumericModel, compile_equations
+from ..codegen.numeric import NumericModel, compile_equations, lam_required
 from ..conventions import VELOCITY_SUFFIX, t
-from ..errors import InitialConditionError, IntegrationError, LagrangeError, SingularMassMatrixError
+from ..errors import InitialConditionError, IntegrationError, LagrangeError
 from ..model.coordinates import coordinate_name, is_coordinate
 from ..results.trajectory import Trajectory
+from .constrained import STABILIZATIONS, Projector, baumgarte_rhs, consistent_initial
 from .scipy_ivp import IMPLICIT_METHODS, SCIPY_METHODS, jacobian_function
+from .stepper import STEPPABLE, step_loop
 
 __all__ = ["simulate", "initial_state", "choose_method"]
 
@@ -64,26 +66,26 @@ def initial_state(coords: Sequence, initial: Mapping) -> np.ndarray:
     return np.array([slots[i] for i in range(2 * n)], dtype=float)
 
 
-def choose_method(model: NumericModel) -> tuple[str, str]:
+def choose_method(eqs) -> tuple[str, str]:
     """A sensible scipy method and the reason (``method="auto"``).
 
     Dissipative systems (P or D present) may be stiff: LSODA switches automatically between Adams
     and BDF. Conservative or forced systems: DOP853, the most efficient at tight tolerances.
     """
-    eqs = model.equations
     if eqs.power_function != 0 or eqs.rayleigh != 0:
         return "LSODA", "dissipation present (P or rayleigh): possibly stiff, LSODA switches to BDF if so"
     return "DOP853", "no dissipation: non-stiff, DOP853 is the most efficient explicit method"
 
 
 def _power_function(model: NumericModel):
+    """``power(t, y_list, lam_list)``: dh/dt, the power of everything not in L (incl. moving constraints)."""
     eqs = model.equations
     ren = rename_map(eqs)
     ys = sp.symbols(f"y0:{2 * eqs.n}", real=True)
     ps = [ren[s] for s in eqs.parameters]
-    f = sp.lambdify((ren[t], ys, ps), eqs.jacobi_rate.xreplace(ren), modules="math", cse=True)
+    f = sp.lambdify((ren[t], ys, ps, list(eqs.multipliers)), eqs.jacobi_rate.xreplace(ren), modules="math", cse=True)
     p = list(model.params)
-    return lambda t_, y: f(t_, y, p)
+    return lambda t_, y, lam=(): f(t_, y, p, list(lam) + [0.0] * (eqs.m - len(lam)))
 
 
 def _state_text(model: NumericModel, y) -> str:
@@ -109,6 +111,88 @@ def _collapse_error(model: NumericModel, res, t0: float, y0) -> IntegrationError
     )
 
 
+def _state_function(model: NumericModel, *, with_work: bool):
+    """``f(t, z)`` for scipy: ``[q̇, q̈]`` (+ the power dh/dt as the last entry when ``with_work``), with a
+    non-finite check that reports the time and state."""
+    eqs = model.equations
+    n2 = 2 * eqs.n
+    fun = model.fun
+    power = _power_function(model) if with_work else None
+    needs_lam = lam_required(eqs)
+    dyn, pcall = model.dynamics, model._pcall
+
+    def f(t_, z):
+        if power is None:
+            out = fun(t_, z)
+        else:
+            y = z[:n2]
+            if needs_lam:
+                try:
+                    full = list(dyn(t_, y, pcall))
+                except ZeroDivisionError:
+                    raise model.singular_error(t_, y) from None
+                out, lam = full[:n2], full[n2:]
+            else:
+                out, lam = list(fun(t_, y)), []
+            out.append(power(t_, y.tolist(), lam))
+        s = sum(out)
+        if s != s or s in (math.inf, -math.inf):
+            raise IntegrationError(
+                f"non-finite derivative at t={t_:.9g} ({_state_text(model, z)}); likely causes: a "
+                "singular configuration (division by zero in the model), a blow-up, or a parameter out "
+                "of range",
+                t=float(t_),
+                state=dict(zip([*model.equations.coordinates], z)),
+            )
+        return out
+
+    return f
+
+
+def _jacobian(model: NumericModel, method: str, conservative: bool):
+    """The generated Jacobian for implicit methods (unconstrained systems; scipy's finite differences
+    otherwise)."""
+    if method not in IMPLICIT_METHODS or model.m:
+        return None
+    jy = jacobian_function(model)
+    if conservative:
+        return jy
+    n2 = 2 * model.n
+
+    def jac(t_, z):  # the work integral does not feed back
+        J = np.zeros((n2 + 1, n2 + 1))
+        J[:n2, :n2] = jy(t_, z[:n2])
+        return J
+
+    return jac
+
+
+def _contact_events(model: NumericModel) -> list:
+    """Terminal events at the sign change of the multiplier of each unilateral constraint."""
+    out = []
+    for k, uni in enumerate(model.equations.unilateral):
+        if not uni:
+            continue
+
+        def ev(t_, z, k=k):
+            return float(model.multipliers(t_, z[: 2 * model.n])[k])
+
+        ev.terminal = True
+        ev.direction = -1
+        ev.contact = model.equations.constraint_names[k]
+        out.append(ev)
+    return out
+
+
+def _contact_message(model: NumericModel, res) -> str:
+    names = [n for n, u in zip(model.equations.constraint_names, model.equations.unilateral) if u]
+    if not names or res.t_events is None:
+        return ""
+    fired = [(names[i], tev[0]) for i, tev in enumerate(list(res.t_events)[-len(names):]) if len(tev)]
+    return "".join(f" Contact lost: the force of {nm} reached zero at t={te:.9g}; switch models there."
+                   for nm, te in fired)
+
+
 def simulate(
     system,
     t_span,
@@ -126,6 +210,9 @@ def simulate(
     model: NumericModel | None = None,
     friction: str = "events",
     friction_epsilon: float = 1e-6,
+    stabilization: str = "projection",
+    baumgarte: tuple = (10.0, 10.0),
+    project_initial: bool = True,
 ) -> Trajectory:
     """Integrate Lagrange's equations of ``system``.
 
@@ -143,6 +230,10 @@ def simulate(
     model : a NumericModel from :meth:`System.compile` to reuse (skips code generation)
     friction : ``"events"`` (default) or ``"regularize"``; see :mod:`lagrange.integrate.switching`
     friction_epsilon : velocity scale of the regularization
+    stabilization : ``"projection"`` (default), ``"baumgarte"`` or ``"none"`` — constraint drift control,
+        see :mod:`lagrange.integrate.constrained`
+    baumgarte : (α, β) in 1/time for Baumgarte stabilization
+    project_initial : project an inconsistent initial state onto the constraints (default) or raise
 
     Returns
     -------
@@ -164,9 +255,10 @@ def simulate(
     t0, t1 = float(t_span[0]), float(t_span[1])
     if not (math.isfinite(t0) and math.isfinite(t1)) or t1 == t0:
         raise IntegrationError(f"t_span must be two different finite times, got {t_span}")
-    options = {"events", "regularize"}
-    if friction not in options:
-        raise TypeError(f"friction must be one of {sorted(options)}, got {friction!r}")
+    if friction not in ("events", "regularize"):
+        raise TypeError(f"friction must be 'events' or 'regularize', got {friction!r}")
+    if stabilization not in STABILIZATIONS:
+        raise TypeError(f"stabilization must be one of {', '.join(STABILIZATIONS)}, got {stabilization!r}")
     eqs = system.derived
     switches = switching_functions(eqs)
     if switches and friction == "regularize":
@@ -174,70 +266,48 @@ def simulate(
 
         eqs = regularized_equations(eqs, friction_epsilon)
         switches = []
-    if model is None:
-        from ..codegen.numeric import compile_equations as _compile
-
-        model = _compile(eqs, params, backend=backend)
-    elif model.equations is not eqs:
-        model = compile_equations(eqs, dict(zip(eqs.parameters, model.params)), backend=model.backend)
-    y0 = initial_state(eqs.coordinates, initial)
+    if switches and eqs.m:
+        raise TypeError("sign() switches (dry friction) with constraints: use friction='regularize'")
     why = ""
     if method == "auto":
-        method, why = choose_method(model)
+        method, why = choose_method(eqs)
     if method not in SCIPY_METHODS:
         raise TypeError(f"unknown method {method!r}; choose one of {', '.join(SCIPY_METHODS)} or 'auto'")
+    notes = [f"auto: {why}"] if why else []
+    if eqs.m and stabilization == "projection" and method not in STEPPABLE:
+        stabilization = "baumgarte"
+        notes.append(f"{method} keeps a step history, so constraint drift is controlled by Baumgarte "
+                     "stabilization instead of projection")
+    crhs = baumgarte_rhs(eqs, *baumgarte) if eqs.m and stabilization == "baumgarte" else None
+    if model is None or model.equations is not eqs or crhs is not None:
+        p = params if model is None else dict(zip(eqs.parameters, model.params))
+        model = compile_equations(eqs, p, backend=backend if model is None else model.backend, constraint_rhs=crhs)
+    y0 = initial_state(eqs.coordinates, initial)
+    initial_report = {}
+    if eqs.m:
+        y0, initial_report = consistent_initial(model, t0, y0, project_initial)
     if t_eval is None:
         t_eval = np.linspace(t0, t1, n_points)
     t_eval = np.asarray(t_eval, dtype=float)
-
     if not switches:
-        try:
-            model.fun(t0, y0)
-        except SingularMassMatrixError:
-            raise
+        model.fun(t0, y0)  # raises SingularMassMatrixError naming the coordinates
     conservative = eqs.is_conservative
     n2 = 2 * eqs.n
-    fun = model.fun
-    power = None if conservative else _power_function(model)
-
-    def f(t_, z):
-        if power is None:
-            out = fun(t_, z)
-        else:
-            y = z[:n2]
-            out = list(fun(t_, y))
-            out.append(power(t_, y.tolist()))
-        s = sum(out)
-        if s != s or s in (math.inf, -math.inf):
-            raise IntegrationError(
-                f"non-finite derivative at t={t_:.9g} ({_state_text(model, z)}); likely causes: a "
-                "singular configuration (division by zero in the model), a blow-up, or a parameter out "
-                "of range",
-                t=float(t_),
-                state=dict(zip([*model.equations.coordinates], z)),
-            )
-        return out
-
+    f = _state_function(model, with_work=not conservative)
     z0 = y0 if conservative else np.append(y0, 0.0)
-    jac = None
-    if method in IMPLICIT_METHODS:
-        jy = jacobian_function(model)
-        if conservative:
-            jac = jy
-        else:
-            def jac(t_, z):  # the work integral does not feed back
-                J = np.zeros((n2 + 1, n2 + 1))
-                J[:n2, :n2] = jy(t_, z[:n2])
-                return J
-
+    jac = _jacobian(model, method, conservative)
+    all_events = list(events or []) + _contact_events(model)
     kwargs = dict(method=method, rtol=rtol, atol=atol, max_step=max_step)
     if jac is not None:
         kwargs["jac"] = jac
     try:
         if switches:
-            res = run_switched(model, switches, (t0, t1), z0, t_eval, events, kwargs, power is not None)
+            res = run_switched(model, switches, (t0, t1), z0, t_eval, all_events, kwargs, not conservative)
+        elif eqs.m and stabilization == "projection":
+            proj = Projector(model.constraint_functions, eqs.n)
+            res = step_loop(f, (t0, t1), z0, t_eval=t_eval, events=all_events, post_step=proj, **kwargs)
         else:
-            res = solve_ivp(f, (t0, t1), z0, t_eval=t_eval, events=events, **kwargs)
+            res = solve_ivp(f, (t0, t1), z0, t_eval=t_eval, events=all_events or None, **kwargs)
     except LagrangeError:
         raise
     except (ValueError, ZeroDivisionError, OverflowError, np.linalg.LinAlgError) as exc:
@@ -245,17 +315,20 @@ def simulate(
     if res.status == -1:
         raise _collapse_error(model, res, t0, y0)
     Y = res.y.T
-    label = method if not why else f"{method} (auto: {why})"
+    if eqs.m:
+        notes.append(f"constraints: {stabilization}")
+    label = method + (f" ({'; '.join(notes)})" if notes else "")
     return Trajectory(
         t=res.t,
         y=Y[:, :n2].copy(),
         model=model,
         method=label,
         success=bool(res.success),
-        message=str(res.message),
+        message=str(res.message) + _contact_message(model, res),
         nfev=int(res.nfev),
         work=None if conservative else Y[:, n2].copy(),
         initial=(t0, y0.copy()),
+        initial_constraint_violation=initial_report,
         switches=(res.switched_model, res.sigma) if switches else (),
         t_events=list(res.t_events) if res.t_events is not None else [],
         y_events=[np.asarray(v)[:, :n2] if len(v) else np.empty((0, n2)) for v in res.y_events]

@@ -109,7 +109,8 @@ def run_switched(model, switches, t_span, z0, t_eval, events, kwargs, with_work)
     pw = None
     if with_work:
         ps = [ren[s] for s in eqs.parameters]
-        pw = sp.lambdify((ren[t], ys, ps), eqs.jacobi_rate.xreplace(ren), modules="math", cse=True)
+        pw = sp.lambdify((ren[t], ys, ps, list(eqs.multipliers)), eqs.jacobi_rate.xreplace(ren), modules="math",
+                         cse=True)
     rhs = sw_model.rhs
     nparam = len(eqs0.parameters)
 
@@ -187,7 +188,7 @@ def run_switched(model, switches, t_span, z0, t_eval, events, kwargs, with_work)
             pp = _pa(t_, y_)
             d = list(rhs(t_, y_, pp))
             if pw is not None:
-                d.append(pw(t_, list(y_), list(pp)))
+                d.append(pw(t_, list(y_), list(pp), []))
             s = sum(d)
             if s != s or s in (math.inf, -math.inf):
                 raise IntegrationError(

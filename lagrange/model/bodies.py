@@ -47,6 +47,8 @@ class Body(Protocol):
 
     def position_vectors(self) -> tuple[sp.Matrix, ...]: ...
 
+    def subs(self, mapping) -> Body: ...
+
 
 @dataclass(frozen=True, eq=False)
 class Particle:
@@ -86,6 +88,10 @@ class Particle:
 
     def position_vectors(self) -> tuple[sp.Matrix, ...]:
         return (self.position,)
+
+    def subs(self, mapping) -> Particle:
+        """The particle with ``mapping`` substituted in its mass and position (then ``doit``)."""
+        return Particle(sp.sympify(self.mass).subs(mapping).doit(), self.position.subs(mapping).doit(), self.name)
 
     def __repr__(self) -> str:
         label = f" {self.name!r}" if self.name else ""

@@ -20,6 +20,7 @@ from sympy.core.function import AppliedUndef
 from ..conventions import VELOCITY_SUFFIX, t
 from ..errors import DeclarationError
 from .bodies import Body
+from .constraints import Differential, Holonomic, Nonholonomic, normalize_constraints
 from .coordinates import coordinate_name, is_coordinate, virtual_displacement
 from .forces import generalized_forces
 
@@ -74,6 +75,12 @@ class System:
     prescribed : dict ``{q(t): expression of t}``, optional
         Coordinates whose motion is prescribed (Wells Ex. 4.9): they are substituted everywhere and are
         not degrees of freedom.
+    constraints : sequence, optional
+        Holonomic ``φ(q, t)`` (an expression meaning ``= 0``, an ``Eq`` or :class:`~lagrange.Holonomic`)
+        and non-holonomic ones (linear in the velocities, :class:`~lagrange.Nonholonomic` or Wells'
+        differential form :class:`~lagrange.Differential`). All coordinates are kept and multipliers
+        λ are added (Wells ch. 12); see :mod:`lagrange.model.constraints` for the sign convention and
+        :func:`lagrange.eliminate` to remove superfluous coordinates instead.
 
     Raises
     ------
@@ -105,6 +112,7 @@ class System:
         *,
         parameters: Sequence[sp.Symbol] | None = None,
         prescribed: Mapping | None = None,
+        constraints: Sequence = (),
         description: str = "",
     ):
         problems: list[str] = []
@@ -169,6 +177,12 @@ class System:
             raw_forces = _substitute_forces(forces, presc)
         F = generalized_forces(raw_forces, coords, problems) if coords else {}
 
+        specs = ()
+        if constraints:
+            raw = [_substitute_constraint(c, presc) for c in constraints] if presc else list(constraints)
+            specs = normalize_constraints(raw, coords, problems)
+            for spec in specs:
+                self._check_expr(spec.name, spec.velocity, coords, presc, 1, problems, parameters)
         self._check_expr("T", T_total, coords, presc, 1, problems, parameters)
         self._check_expr("V", V_e, coords, presc, 0, problems, parameters)
         self._check_expr("P", P_e, coords, presc, 1, problems, parameters)
@@ -180,6 +194,7 @@ class System:
 
         self.coordinates: tuple = coords
         self.T: sp.Expr = T_total
+        self.T_given: sp.Expr = prep(0 if T is None else T, "T")
         self.V: sp.Expr = V_e
         self.P: sp.Expr = P_e
         self.rayleigh: sp.Expr = D_e
@@ -188,6 +203,7 @@ class System:
         self.name: str = name or ""
         self.description: str = description
         self.prescribed: dict = presc
+        self.constraints: tuple = specs
         self._declared_parameters = tuple(parameters) if parameters is not None else None
         self._frozen = True
 
@@ -271,7 +287,9 @@ class System:
         r"""Lagrange's equations in Wells' form, one ``Eq`` per coordinate.
 
         ``d/dt(∂T/∂q̇) − ∂T/∂q + ∂V/∂q = F_q + ∂P/∂q̇ − ∂D/∂q̇``, in the coordinate functions (dots in
-        Jupyter), collected in the accelerations.
+        Jupyter), collected in the accelerations. With constraints each equation gains the multiplier
+        terms ``Σ_k λ_k A_kr`` (Wells' generalized forces of constraint) and the m constraint equations
+        follow the n Lagrange equations.
         """
         from ..derive.lagrange import book_form
 
@@ -361,6 +379,17 @@ class System:
         from ..printing import latex_equations
 
         return latex_equations(self)
+
+
+def _substitute_constraint(c, presc):
+    def sub(x):
+        return sp.sympify(x).subs(presc).doit()
+
+    if isinstance(c, (Holonomic, Nonholonomic)):
+        return type(c)(sub(c.expr), c.name, *((c.unilateral,) if isinstance(c, Holonomic) else ()))
+    if isinstance(c, Differential):
+        return Differential({k: sub(v) for k, v in c.coefficients.items()}, sub(c.dt), c.name)
+    return sub(c)
 
 
 def _substitute_forces(forces, presc):

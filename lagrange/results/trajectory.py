@@ -59,6 +59,7 @@ class Trajectory:
     y_events: list = field(default_factory=list)
     initial: tuple = ()  # (t0, y0): the work integral starts there, whatever the output times
     switches: tuple = ()  # (switched model, sigma array (m, K)) when sign() switches were integrated
+    initial_constraint_violation: dict = field(default_factory=dict)  # user's state before projection
 
     @property
     def coordinates(self) -> tuple:
@@ -108,6 +109,43 @@ class Trajectory:
         else:
             rows = [self.model.fun(ti, yi)[n:] for ti, yi in zip(self.t, self.y)]
         return np.array(rows, dtype=float).reshape(len(self.t), n)
+
+    @cached_property
+    def multipliers(self) -> np.ndarray:
+        """λ at every output time, shape (m_times, m) (empty second axis without constraints).
+
+        ``Aᵀλ`` is the generalized force of the constraints (see :mod:`lagrange.model.constraints`)."""
+        m = self.model.m
+        if not m:
+            return np.empty((len(self.t), 0))
+        return np.array([self.model.multipliers(ti, yi) for ti, yi in zip(self.t, self.y)]).reshape(len(self.t), m)
+
+    def multiplier(self, name: str) -> np.ndarray:
+        """λ of the constraint called ``name`` over time."""
+        names = self.model.equations.constraint_names
+        if name not in names:
+            raise KeyError(f"no constraint named {name!r}; constraints: {', '.join(names) or 'none'}")
+        return self.multipliers[:, names.index(name)]
+
+    @cached_property
+    def constraint_violation(self) -> dict[str, np.ndarray]:
+        """Per constraint: ``position`` |φ| (holonomic; 0 otherwise) and ``velocity`` |A q̇ + b| over time."""
+        m, n = self.model.m, self.model.n
+        if not m:
+            return {}
+        cf = self.model.constraint_functions
+        pos = np.zeros((len(self.t), m))
+        vel = np.zeros((len(self.t), m))
+        for i, (ti, yi) in enumerate(zip(self.t, self.y)):
+            if cf.holonomic:
+                pos[i, cf.holonomic] = np.abs(cf.phi(ti, yi[:n]))
+            vel[i] = np.abs(cf.velocity_residual(ti, yi))
+        return {"position": pos, "velocity": vel}
+
+    def max_constraint_violation(self) -> float:
+        """Largest |φ| or |A q̇ + b| over the run (0 without constraints)."""
+        v = self.constraint_violation
+        return float(max(np.max(v["position"]), np.max(v["velocity"]))) if v else 0.0
 
     @cached_property
     def diagnostics(self) -> dict[str, np.ndarray]:

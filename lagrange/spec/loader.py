@@ -139,6 +139,8 @@ def _load_python(path: Path) -> LoadedSpec:
 
 def _from_problem(problem) -> LoadedSpec:
     sim = problem.simulation
+    if problem.system is None:
+        return LoadedSpec(None, label=problem.id, problem=problem)  # type: ignore[arg-type]
     if sim is None:
         return LoadedSpec(problem.system, label=problem.id, problem=problem)
     return LoadedSpec(problem.system, dict(sim.params), dict(sim.initial), sim.t_end, dict(sim.options),

@@ -1,0 +1,53 @@
+r"""Constraint blocks for the multiplier form of Lagrange's equations (Wells ch. 12, superfluous coordinates).
+
+With velocity-level constraints ``g = A(q, t) q̇ + b(q, t) = 0`` the equations become
+
+.. math::
+
+    M\ddot q = f + A^{\mathsf T}\lambda, \qquad A\ddot q = c,
+    \qquad c = -\Big(\sum_j \frac{\partial g}{\partial q_j}\dot q_j + \frac{\partial g}{\partial t}\Big)
+    \Big|_{\ddot q\text{-free}},
+
+an index-1 system for (q̈, λ). ``λ_k A_kr`` is the generalized force of constraint on coordinate r —
+Wells' 𝓕_qr of eq. (12.3): the reaction "distorted" by +δq_r with t frozen.
+"""
+
+from __future__ import annotations
+
+import sympy as sp
+
+from ..conventions import t
+from ..model.coordinates import to_symbols
+
+__all__ = ["constraint_blocks", "multiplier_symbols"]
+
+
+def multiplier_symbols(m: int) -> tuple:
+    """``lambda_1 … lambda_m`` (real symbols)."""
+    return tuple(sp.Symbol(f"lambda_{k + 1}", real=True) for k in range(m))
+
+
+def constraint_blocks(specs, coords, q, qd) -> dict:
+    """A, b, c and φ in plain symbols for the validated constraints ``specs``."""
+    n, m = len(q), len(specs)
+    A = sp.zeros(m, n)
+    b, c, phi = [], [], []
+    for k, spec in enumerate(specs):
+        g = to_symbols(spec.velocity, coords)
+        for j in range(n):
+            A[k, j] = sp.diff(g, qd[j])
+        bk = sp.expand(g - sum((A[k, j] * qd[j] for j in range(n)), sp.S.Zero))
+        b.append(bk)
+        # d/dt g = A q̈ + (∂g/∂q) q̇ + ∂g/∂t ; with g linear in q̇, ∂g/∂q contains q̇ (that is Ȧ q̇ + ḃ)
+        rate = sum((sp.diff(g, q[j]) * qd[j] for j in range(n)), sp.S.Zero) + sp.diff(g, t)
+        c.append(-rate)
+        phi.append(None if spec.position is None else to_symbols(spec.position, coords))
+    return {
+        "constraint_names": tuple(s.name for s in specs),
+        "constraint_matrix": sp.ImmutableMatrix(A),
+        "constraint_bias": tuple(b),
+        "constraint_rhs": tuple(c),
+        "constraint_positions": tuple(phi),
+        "multipliers": multiplier_symbols(m),
+        "unilateral": tuple(s.unilateral for s in specs),
+    }

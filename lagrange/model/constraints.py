@@ -1,0 +1,201 @@
+r"""Equations of constraint: holonomic, moving and non-holonomic (Wells 2.5, 2.20, 9.12, ch. 12).
+
+* **Holonomic** ``φ(q, t) = 0`` (moving when t appears). Written as an expression (``= 0`` implied) or an
+  ``Eq``; declared with :class:`Holonomic` or detected automatically (no velocities).
+* **Non-holonomic**, Wells' differential form ``Σ_j a_kj dq_j + a_kt dt = 0``, equivalently linear in the
+  velocities ``Σ_j a_kj q̇_j + a_kt = 0``. Declared with :class:`Nonholonomic` (velocity form),
+  :class:`Differential` (coefficients) or detected automatically (linear in velocities).
+
+Every constraint is brought to the velocity level ``g_k = Σ_j A_kj q̇_j + b_k = 0`` (for a holonomic one
+``A = ∂φ/∂q``, ``b = ∂φ/∂t``). Multipliers enter Lagrange's equations as ``+ Aᵀλ`` on the right-hand side:
+``λ_k A_kr`` is the generalized force of constraint on coordinate r (Wells' 𝓕_qr of eq. 12.3). Its
+physical size and sign follow the way φ is written: for ``φ = r − l`` (a distance growing away from the
+surface) ``λ`` is the normal force pushing outward; for a string ``φ = r − l`` the tension is ``−λ``.
+
+A differential constraint that is integrable (Frobenius: ``ω ∧ dω = 0``) is really holonomic; the engine
+reports it (:class:`IntegrableConstraintWarning`) and keeps it as given.
+"""
+
+from __future__ import annotations
+
+import itertools
+import warnings
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+
+import sympy as sp
+
+from ..conventions import t
+from .coordinates import coordinate_name, is_coordinate
+
+__all__ = [
+    "Holonomic",
+    "Nonholonomic",
+    "Differential",
+    "ConstraintSpec",
+    "IntegrableConstraintWarning",
+    "normalize_constraints",
+    "is_integrable",
+]
+
+
+class IntegrableConstraintWarning(UserWarning):
+    """A differential (non-holonomic) constraint turned out to be integrable, i.e. holonomic."""
+
+
+def _expr(e):
+    e = sp.sympify(e)
+    if isinstance(e, sp.Equality):
+        return e.lhs - e.rhs
+    return e
+
+
+@dataclass(frozen=True)
+class Holonomic:
+    """``φ(q, t) = 0``; ``unilateral=True`` marks a contact that can only push (see simulate events)."""
+
+    expr: sp.Expr
+    name: str = ""
+    unilateral: bool = False
+
+
+@dataclass(frozen=True)
+class Nonholonomic:
+    """``Σ a_j q̇_j + a_t = 0`` written in the velocities."""
+
+    expr: sp.Expr
+    name: str = ""
+
+
+@dataclass(frozen=True)
+class Differential:
+    """Wells' differential form ``Σ_j a_j dq_j + a_t dt = 0`` from its coefficients ``{q_j: a_j}``."""
+
+    coefficients: Mapping
+    dt: sp.Expr = sp.S.Zero
+    name: str = ""
+
+    def velocity_form(self):
+        return sum((sp.sympify(a) * q.diff(t) for q, a in self.coefficients.items()), sp.S.Zero) + sp.sympify(self.dt)
+
+
+@dataclass(frozen=True)
+class ConstraintSpec:
+    """A validated constraint: ``kind`` is ``"holonomic"`` or ``"nonholonomic"``; ``velocity`` is g = A q̇ + b
+    in the coordinate functions; ``position`` is φ for holonomic ones (else None)."""
+
+    kind: str
+    name: str
+    velocity: sp.Expr
+    position: sp.Expr | None
+    unilateral: bool = False
+    integrable: bool = False
+
+
+def _velocity_level(phi, coords):
+    """``dφ/dt = Σ ∂φ/∂q q̇ + ∂φ/∂t`` with ``∂φ/∂t`` taken at frozen coordinates."""
+    frozen = {q: sp.Dummy(coordinate_name(q)) for q in coords}
+    back = {v: k for k, v in frozen.items()}
+    partial_t = sp.diff(phi.xreplace(frozen), t).xreplace(back)
+    return sum((sp.diff(phi, q) * q.diff(t) for q in coords), sp.S.Zero) + partial_t
+
+
+def normalize_constraints(constraints, coords: Sequence, problems: list) -> tuple[ConstraintSpec, ...]:
+    """Classify and validate every constraint; problems are appended to ``problems``.
+
+    Rules: no accelerations; a :class:`Holonomic` constraint has no velocities; a velocity constraint
+    is linear in the velocities; only coordinates of the system (and t, parameters) appear.
+    """
+    out = []
+    vel = [q.diff(t) for q in coords]
+    for k, c in enumerate(constraints or ()):
+        label = getattr(c, "name", "") or f"constraint {k + 1}"
+        declared = type(c).__name__ if isinstance(c, (Holonomic, Nonholonomic, Differential)) else None
+        unilateral = bool(getattr(c, "unilateral", False))
+        if isinstance(c, Differential):
+            bad = [q for q in c.coefficients if not (is_coordinate(q) and q in coords)]
+            if bad:
+                problems.append(f"{label}: {', '.join(map(str, bad))} in the differential form are not coordinates")
+                continue
+            e = c.velocity_form()
+        else:
+            raw = c.expr if isinstance(c, (Holonomic, Nonholonomic)) else c
+            try:
+                e = _expr(raw)
+            except (sp.SympifyError, TypeError):
+                problems.append(f"{label}: {raw!r} is not an expression")
+                continue
+        strays = [f for f in e.atoms(sp.core.function.AppliedUndef) if f not in coords]
+        if strays:
+            problems.append(f"{label} ({e} = 0) contains {', '.join(map(str, strays))}, not coordinates of this system")
+            continue
+        orders = [sum(n for v, n in d.variable_count) for d in e.atoms(sp.Derivative)]
+        if any(o > 1 for o in orders):
+            problems.append(f"{label} ({e} = 0) contains an acceleration: constraints are on positions or velocities")
+            continue
+        has_vel = bool(orders)
+        if declared == "Holonomic" and has_vel:
+            problems.append(
+                f"{label} is declared holonomic but contains velocities ({e} = 0): a holonomic constraint is "
+                "φ(q, t) = 0; declare velocity constraints with Nonholonomic"
+            )
+            continue
+        if not has_vel:
+            if declared in ("Nonholonomic", "Differential"):
+                problems.append(f"{label} is declared non-holonomic but has no velocities: use Holonomic")
+                continue
+            if e.free_symbols.isdisjoint({t}) and not e.atoms(sp.core.function.AppliedUndef):
+                problems.append(f"{label} ({e} = 0) involves no coordinate")
+                continue
+            out.append(ConstraintSpec("holonomic", label, _velocity_level(e, coords), e, unilateral))
+            continue
+        # velocity constraint: must be linear in the velocities
+        coeffs = [sp.diff(e, v) for v in vel]
+        if any(c_.has(*vel) for c_ in coeffs if c_ != 0):
+            problems.append(
+                f"{label} ({e} = 0) is not linear in the velocities: Wells' non-holonomic constraints have the "
+                "form Σ a_j dq_j + a_t dt = 0"
+            )
+            continue
+        integrable = is_integrable(coeffs, e.subs({v: 0 for v in vel}), coords)
+        if integrable:
+            warnings.warn(
+                f"{label} ({e} = 0) is integrable: it is really a holonomic constraint (Frobenius condition "
+                "holds); it is kept in velocity form, but it can be integrated to φ(q, t) = 0 and used to "
+                "eliminate a coordinate",
+                IntegrableConstraintWarning,
+                stacklevel=3,
+            )
+        out.append(ConstraintSpec("nonholonomic", label, e, None, False, integrable))
+    return tuple(out)
+
+
+def is_integrable(coefficients: Sequence, a_t, coords: Sequence) -> bool:
+    r"""Frobenius test for one Pfaffian form ``ω = Σ a_j dq_j + a_t dt`` in the variables (q, t):
+    ``ω ∧ dω = 0``, i.e. for every triple of variables
+    ``a_i(∂_j a_k − ∂_k a_j) + a_j(∂_k a_i − ∂_i a_k) + a_k(∂_i a_j − ∂_j a_i) = 0``.
+    """
+    from .coordinates import position_symbol
+
+    syms = [position_symbol(q) for q in coords] + [t]
+    sub = {q: position_symbol(q) for q in coords}
+    a = [sp.sympify(c).subs(sub) for c in coefficients] + [sp.sympify(a_t).subs(sub)]
+    # only variables that carry a coefficient or appear in one matter
+    involved = [i for i, s in enumerate(syms) if a[i] != 0 or any(ai.has(s) for ai in a)]
+    for i, j, k in itertools.combinations(involved, 3):
+        expr = (a[i] * (sp.diff(a[k], syms[j]) - sp.diff(a[j], syms[k]))
+                + a[j] * (sp.diff(a[i], syms[k]) - sp.diff(a[k], syms[i]))
+                + a[k] * (sp.diff(a[j], syms[i]) - sp.diff(a[i], syms[j])))
+        if sp.expand(expr) != 0 and sp.simplify(expr) != 0:
+            return False
+    return True
+
+
+def constraint_names(specs: Sequence[ConstraintSpec]) -> list[str]:
+    return [s.name for s in specs]
+
+
+def describe(spec: ConstraintSpec, coords) -> str:
+    kind = spec.kind + (" (integrable)" if spec.integrable else "")
+    body = spec.position if spec.position is not None else spec.velocity
+    return f"{spec.name}: {kind}, {body} = 0 in ({', '.join(coordinate_name(q) for q in coords)})"
