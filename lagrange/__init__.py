@@ -15,7 +15,7 @@ from .errors import (
     SpecError,
 )
 from .model.bodies import Force, Particle
-from .model.constraints import Differential, Holonomic, IntegrableConstraintWarning, Nonholonomic
+from .model.constraints import Differential, Holonomic, IntegrableConstraintWarning, Nonholonomic, Rough
 from .model.coordinates import coordinates, delta, parameters
 from .model.eliminate import eliminate
 from .model.system import System
@@ -34,6 +34,7 @@ __all__ = [
     "Holonomic",
     "Nonholonomic",
     "Differential",
+    "Rough",
     "IntegrableConstraintWarning",
     "eliminate",
     "latex",

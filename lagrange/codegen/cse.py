@@ -23,7 +23,7 @@ def rename_map(eqs: Equations) -> dict:
     n = eqs.n
     m = {s: sp.Symbol(f"y{i}", real=True) for i, s in enumerate(eqs.q)}
     m.update({s: sp.Symbol(f"y{n + i}", real=True) for i, s in enumerate(eqs.qd)})
-    m.update({s: sp.Symbol(f"p{k}", real=True) for k, s in enumerate(eqs.parameters)})
+    m.update({s: sp.Symbol(f"p{k}", real=True) for k, s in enumerate(eqs.numeric_parameters)})
     m[t] = sp.Symbol("t", real=True)
     return m
 
@@ -38,6 +38,7 @@ class FusedExpressions:
     forcing: tuple  # n expressions
     constraint_matrix: dict = None  # {(r, j): expr} structural zeros omitted
     constraint_rhs: tuple = ()  # c_r with A q̈ = c (Baumgarte terms included when requested)
+    reaction: dict | None = None  # {(j, r): expr} of B when it differs from Aᵀ (rough constraints)
 
     @property
     def m(self) -> int:
@@ -53,14 +54,24 @@ def fuse(eqs: Equations, *, extra: tuple = (), constraint_rhs=None) -> tuple[Fus
     """
     n = eqs.n
     ren = rename_map(eqs)
-    idx = [(i, j) for i in range(n) for j in range(i, n) if eqs.mass_matrix[i, j] != 0]
-    exprs = [eqs.mass_matrix[i, j].xreplace(ren) for i, j in idx]
-    exprs += [e.xreplace(ren) for e in eqs.forcing]
     A = eqs.constraint_matrix
-    aidx = [(r, j) for r in range(eqs.m) for j in range(n) if A[r, j] != 0]
     crhs = list(constraint_rhs) if constraint_rhs is not None else list(eqs.constraint_rhs)
+    M, f = sp.Matrix(eqs.mass_matrix), sp.Matrix(eqs.forcing)
+    if eqs.m:
+        # exact augmented form: adding Aᵀ(A q̈ − c) = 0 gives (M + AᵀA) q̈ = f + Aᵀc + Bλ, whose matrix is
+        # positive definite whenever the constrained problem is well posed — also when M itself is
+        # singular (superfluous coordinates that carry no inertia of their own)
+        M = M + A.T * A
+        f = f + A.T * sp.Matrix(crhs)
+    idx = [(i, j) for i in range(n) for j in range(i, n) if M[i, j] != 0]
+    exprs = [M[i, j].xreplace(ren) for i, j in idx]
+    exprs += [e.xreplace(ren) for e in f]
+    aidx = [(r, j) for r in range(eqs.m) for j in range(n) if A[r, j] != 0]
     exprs += [A[r, j].xreplace(ren) for r, j in aidx]
     exprs += [sp.sympify(e).xreplace(ren) for e in crhs]
+    B = eqs.reaction_matrix
+    bidx = [(j, r) for r in range(eqs.m) for j in range(n) if B[j, r] != 0] if eqs.is_rough else []
+    exprs += [B[j, r].xreplace(ren) for j, r in bidx]
     exprs += [sp.sympify(e).xreplace(ren) for e in extra]
     repl, red = sp.cse(exprs, symbols=sp.numbered_symbols("c", real=True), optimizations="basic")
     k = len(idx)
@@ -72,5 +83,6 @@ def fuse(eqs: Equations, *, extra: tuple = (), constraint_rhs=None) -> tuple[Fus
         forcing=tuple(red[k : k + n]),
         constraint_matrix={rj: e for rj, e in zip(aidx, red[k + n : ka])},
         constraint_rhs=tuple(red[ka : ka + eqs.m]),
+        reaction={jr: e for jr, e in zip(bidx, red[ka + eqs.m : ka + eqs.m + len(bidx)])} if bidx else None,
     )
-    return fused, tuple(red[ka + eqs.m :])
+    return fused, tuple(red[ka + eqs.m + len(bidx) :])

@@ -49,7 +49,7 @@ def bind_parameters(eqs: Equations, params: Mapping) -> np.ndarray:
         by_name[name] = value
     wanted = [s.name for s in eqs.parameters]
     missing = [n for n in wanted if n not in by_name]
-    unknown = sorted(set(by_name) - set(wanted))
+    unknown = sorted(set(by_name) - set(wanted) - {s.name for s in eqs.rough_signs})
     problems = []
     if missing:
         problems.append(f"missing value(s) for parameter(s) {', '.join(missing)}")
@@ -72,7 +72,8 @@ def bind_parameters(eqs: Equations, params: Mapping) -> np.ndarray:
             values.append(v)
     if problems:
         raise ParameterError("; ".join(problems))
-    return np.array(values, dtype=float)
+    signs = [float(by_name.get(s.name, 1.0)) for s in eqs.rough_signs]
+    return np.array(values + signs, dtype=float)
 
 
 @dataclass(frozen=True)
@@ -138,6 +139,10 @@ class NumericModel:
         """An error naming the coordinates involved in the singular mass matrix (or, with constraints,
         the constraints whose Jacobian rows are dependent) at ``(t, y)``."""
         M, _ = self.mass_and_forcing(t, y)
+        if self.m:
+            A = self.constraint_functions.matrix(t, np.asarray(y)[: self.n])
+            if np.linalg.cond(M + A.T @ A) > 1e12:  # singular even on the constraint manifold
+                M = M + A.T @ A
         if self.m and np.linalg.cond(M) < 1e12:
             A = self.constraint_functions.matrix(t, np.asarray(y)[: self.n])
             names = self.equations.constraint_names
@@ -190,7 +195,7 @@ def _reference_functions(eqs: Equations):
     ren = rename_map(eqs)
     n = eqs.n
     ys = sp.symbols(f"y0:{2 * n}", real=True) if n else ()
-    ps = [ren[s] for s in eqs.parameters]
+    ps = [ren[s] for s in eqs.numeric_parameters]
     tt = ren[t]
     M = eqs.mass_matrix.xreplace(ren)
     f = eqs.forcing.xreplace(ren)
@@ -200,20 +205,20 @@ def _reference_functions(eqs: Equations):
         return mf(t_, list(y), list(p))
 
     m = eqs.m
-    Ac = sp.lambdify((tt, ys, ps), (eqs.constraint_matrix.xreplace(ren),
-                                    sp.Matrix(eqs.constraint_rhs).xreplace(ren)), modules="numpy") if m else None
+    Ac = sp.lambdify((tt, ys, ps), (eqs.constraint_matrix.xreplace(ren), sp.Matrix(eqs.constraint_rhs).xreplace(ren),
+                                    eqs.reaction_matrix.xreplace(ren)), modules="numpy") if m else None
 
     def rhs(t_, y, p):
         Mv, fv = mass_forcing(t_, y, p)
         Mv = np.array(Mv, dtype=float)
-        if not np.all(np.isfinite(Mv)) or np.linalg.cond(Mv) > 1e15:
+        if not np.all(np.isfinite(Mv)) or (not m and np.linalg.cond(Mv) > 1e15):
             raise ZeroDivisionError("mass matrix is singular")
         fv = np.array(fv, dtype=float).ravel()
         if not m:
             return np.concatenate([np.asarray(y[n:], dtype=float), np.linalg.solve(Mv, fv)])
-        Av, cv = Ac(t_, list(y), list(p))
+        Av, cv, Bv = Ac(t_, list(y), list(p))
         Av = np.array(Av, dtype=float).reshape(m, n)
-        K = np.block([[Mv, -Av.T], [Av, np.zeros((m, m))]])
+        K = np.block([[Mv, -np.array(Bv, dtype=float).reshape(n, m)], [Av, np.zeros((m, m))]])
         if np.linalg.cond(K) > 1e15:
             raise ZeroDivisionError("constraint Jacobian is rank deficient")
         sol = np.linalg.solve(K, np.concatenate([fv, np.array(cv, dtype=float).ravel()]))
@@ -226,7 +231,7 @@ def _aux_function(eqs: Equations):
     ren = rename_map(eqs)
     n = eqs.n
     ys = sp.symbols(f"y0:{2 * n}", real=True)
-    ps = [ren[s] for s in eqs.parameters]
+    ps = [ren[s] for s in eqs.numeric_parameters]
     T0 = eqs.kinetic.subs({v: 0 for v in eqs.qd})
     qd = sp.Matrix(eqs.qd)
     T2 = (qd.T * eqs.mass_matrix * qd)[0, 0] / 2
@@ -252,7 +257,7 @@ class ConstraintFunctions:
         ren = rename_map(eqs)
         n = eqs.n
         qs = sp.symbols(f"y0:{n}", real=True)
-        ps = [ren[s] for s in eqs.parameters]
+        ps = [ren[s] for s in eqs.numeric_parameters]
         self.holonomic = [k for k, ph in enumerate(eqs.constraint_positions) if ph is not None]
         phis = [eqs.constraint_positions[k].xreplace(ren) for k in self.holonomic]
         Ah = sp.Matrix([[sp.diff(ph, qj) for qj in qs] for ph in phis]) if phis else sp.zeros(0, n)

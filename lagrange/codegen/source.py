@@ -45,9 +45,8 @@ def _ldl_factor(n: int, entry, tag: str, what: str) -> tuple[list[str], dict, li
     d: list[str] = []
     for j in range(n):
         ajj = entry(j, j)
-        if ajj is None:
-            lines.append(f"raise ZeroDivisionError('{what} has a zero diagonal entry')")
-            return lines, nz, d
+        if ajj is None:  # structurally zero: the runtime check below raises (singular matrix)
+            ajj = "0.0"
         terms = [f"{nz[(j, k)]}*{nz[(j, k)]}*{d[k]}" for k in range(j) if (j, k) in nz]
         lines.append(f"{tag}d{j} = {ajj}{''.join(f' - {x}' for x in terms)}")
         lines.append(f"if not ({tag}d{j} > 1e-13 * abs({ajj})):")
@@ -83,26 +82,60 @@ def _ldl_solve(n: int, nz: dict, d: list[str], rhs: list, out: list[str], tag: s
     return lines
 
 
-def _constrained_lines(n: int, m: int, upper: dict, A: dict) -> tuple[list[str], list[str], list[str]]:
-    """q̈ and λ from ``M q̈ = f + Aᵀλ``, ``A q̈ = c`` by the Schur complement ``S = A M⁻¹ Aᵀ``.
+def _lu_lines(m: int, name, rhs: list[str], out: list[str]) -> list[str]:
+    """Unrolled Doolittle LU without pivoting for a small dense non-symmetric system (rough constraints)."""
+    lines = []
+    a = {(i, j): name(i, j) for i in range(m) for j in range(m)}
+    b = list(rhs)
+    for k in range(m):
+        lines.append(f"if abs({a[(k, k)]}) < 1e-300:")
+        lines.append("    raise ZeroDivisionError('reaction system is singular (rough constraint)')")
+        for i in range(k + 1, m):
+            f = f"lf{i}_{k}"
+            lines.append(f"{f} = {a[(i, k)]}/{a[(k, k)]}")
+            for j in range(k + 1, m):
+                new = f"lu{i}_{j}_{k}"
+                lines.append(f"{new} = {a[(i, j)]} - {f}*{a[(k, j)]}")
+                a[(i, j)] = new
+            nb = f"lb{i}_{k}"
+            lines.append(f"{nb} = {b[i]} - {f}*{b[k]}")
+            b[i] = nb
+    for i in reversed(range(m)):
+        terms = "".join(f" - {a[(i, j)]}*{out[j]}" for j in range(i + 1, m))
+        lines.append(f"{out[i]} = ({b[i]}{terms})/{a[(i, i)]}")
+    return lines
 
-    Names: M upper ``a{i}_{j}``, f ``b{i}``, A ``k{r}_{j}`` (``A`` maps present (r, j)), c ``e{r}``.
+
+def _constrained_lines(n: int, m: int, upper: dict, A: dict, B: dict | None = None
+                       ) -> tuple[list[str], list[str], list[str]]:
+    """q̈ and λ from ``M q̈ = f + Bλ``, ``A q̈ = c`` by the Schur complement ``S = A M⁻¹ B``.
+
+    ``B = Aᵀ`` (``B is None``) makes S symmetric positive definite (LDLᵀ); rough constraints give a
+    general B (unrolled LU). Names: M upper ``a{i}_{j}``, f ``b{i}``, A ``k{r}_{j}`` (``A`` maps present
+    (r, j)), c ``e{r}``, B ``h{j}_{r}``.
     """
     lines, nz, d = _ldl_factor(n, lambda i, j: f"a{i}_{j}" if (i, j) in upper else None, "", "mass matrix")
     lines += _ldl_solve(n, nz, d, [f"b{i}" for i in range(n)], [f"xf{i}" for i in range(n)], "f")
     for r in range(m):
-        rhs = [f"k{r}_{j}" if (r, j) in A else None for j in range(n)]
+        if B is None:
+            rhs = [f"k{r}_{j}" if (r, j) in A else None for j in range(n)]
+        else:
+            rhs = [f"h{j}_{r}" if (j, r) in B else None for j in range(n)]
         lines += _ldl_solve(n, nz, d, rhs, [f"xa{r}_{j}" for j in range(n)], f"a{r}")
     for r in range(m):
-        for s_ in range(r, m):
+        for s_ in range(r if B is None else 0, m):
             terms = [f"k{r}_{j}*xa{s_}_{j}" for j in range(n) if (r, j) in A]
             lines.append(f"s{r}_{s_} = {' + '.join(terms) if terms else '0.0'}")
         terms = [f"k{r}_{j}*xf{j}" for j in range(n) if (r, j) in A]
         lines.append(f"rr{r} = e{r}{''.join(f' - {x}' for x in terms)}")
-    fl, snz, sd = _ldl_factor(m, lambda i, j: f"s{i}_{j}", "S", "constraint matrix A M^-1 A^T (redundant constraints?)")
-    lines += fl
     lam = [f"lam{r}" for r in range(m)]
-    lines += _ldl_solve(m, snz, sd, [f"rr{r}" for r in range(m)], lam, "S")
+    if B is None:
+        fl, snz, sd = _ldl_factor(m, lambda i, j: f"s{i}_{j}", "S",
+                                  "constraint matrix A M^-1 A^T (redundant constraints?)")
+        lines += fl
+        lines += _ldl_solve(m, snz, sd, [f"rr{r}" for r in range(m)], lam, "S")
+    else:
+        lines += _lu_lines(m, lambda i, j: f"s{i}_{j}", [f"rr{r}" for r in range(m)], lam)
     acc = []
     for i in range(n):
         terms = [f"xa{r}_{i}*lam{r}" for r in range(m)]
@@ -135,7 +168,9 @@ def rhs_source(fused: FusedExpressions, *, n_params: int, flavour: str = "python
     if fused.m:
         body += [f"k{r}_{j} = {print_expr(e)}" for (r, j), e in fused.constraint_matrix.items()]
         body += [f"e{r} = {print_expr(e)}" for r, e in enumerate(fused.constraint_rhs)]
-        lines, xs, lam = _constrained_lines(n, fused.m, fused.mass_upper, fused.constraint_matrix)
+        if fused.reaction is not None:
+            body += [f"h{j}_{r} = {print_expr(e)}" for (j, r), e in fused.reaction.items()]
+        lines, xs, lam = _constrained_lines(n, fused.m, fused.mass_upper, fused.constraint_matrix, fused.reaction)
         body += lines
         outs = ys[n:] + xs + lam
     else:

@@ -349,7 +349,9 @@ class ConstraintForce(Answer):
         if self.constraint not in eqs.constraint_names:
             raise Mismatch(f"no constraint named {self.constraint!r} (have {', '.join(eqs.constraint_names)})")
         k = eqs.constraint_names.index(self.constraint)
-        sol = system.simulate(self.t_end, self.initial, self.params, rtol=1e-11, atol=1e-12, n_points=41)
+        own = {p.name for p in eqs.parameters}  # extra values may serve the book's expression only
+        sim_params = {k: v for k, v in self.params.items() if getattr(k, "name", str(k)) in own}
+        sol = system.simulate(self.t_end, self.initial, sim_params, rtol=1e-11, atol=1e-12, n_points=41)
         lam = sol.multipliers
         if self.coordinate is not None:
             j = system.coordinates.index(self.coordinate)

@@ -64,7 +64,7 @@ def get_problem(problem_id: str) -> Problem:
     # import the whole corpus to run one problem
     stem = "_" + key.split("-")[0].replace(".", "_")
     for name in _module_names():
-        if name.lower().endswith(stem):
+        if name.lower().endswith(stem) or stem + "_" in name.lower() + "_":
             for p in _module_problems(name):
                 if p.id.lower() == key:
                     return p

@@ -63,11 +63,24 @@ class Equations:
     constraint_positions: tuple = ()  # φ_k(q, t) for holonomic constraints, None for non-holonomic
     multipliers: tuple = ()  # λ_k symbols; the generalized constraint force is Aᵀλ
     unilateral: tuple = ()  # True where the constraint may only push (λ_k ≥ 0)
+    reaction_matrix: sp.ImmutableMatrix = sp.ImmutableMatrix(0, 0, [])  # B (n, m): M q̈ = f + Bλ; Aᵀ unless rough
+    rough_signs: tuple = ()  # σ_k = sign(λ_k)·sign(v_s,k) symbols of rough constraints (bound per segment)
+    sliding_velocities: tuple = ()  # ((k, v_s,k), ...) for rough constraints
 
     @property
     def n(self) -> int:
         """Number of degrees of freedom."""
         return len(self.q)
+
+    @property
+    def numeric_parameters(self) -> tuple:
+        """Symbols bound to the ``p`` vector of generated code: the parameters, then the per-segment
+        friction signs of rough constraints (default +1)."""
+        return self.parameters + self.rough_signs
+
+    @property
+    def is_rough(self) -> bool:
+        return bool(self.rough_signs)
 
     @property
     def m(self) -> int:

@@ -89,13 +89,14 @@ def lagrange_equations(system) -> Equations:
     jacobi_rate = -sp.diff(L, t) + sum((v * Q for v, Q in zip(qd, nonconservative)), sp.S.Zero)
     blocks = constraint_blocks(system.constraints, coords, q, qd) if system.constraints else {}
     if blocks:
-        A, lam = blocks["constraint_matrix"], blocks["multipliers"]
-        # power of the constraint forces, q̇ᵀAᵀλ (= −λᵀb on the constraint manifold: moving constraints)
-        jacobi_rate += sum((lam[k] * A[k, j] * qd[j] for k in range(A.rows) for j in range(n)), sp.S.Zero)
+        B, lam = blocks["reaction_matrix"], blocks["multipliers"]
+        # power of the constraint forces q̇ᵀBλ: −λᵀb for moving constraints, plus friction on rough ones
+        jacobi_rate += sum((lam[k] * B[j, k] * qd[j] for k in range(B.cols) for j in range(n)), sp.S.Zero)
 
     internal = set(q) | set(qd) | set(qdd) | {t}
     everything = [T, V, P, D, *F] + [to_symbols(c.velocity, coords) for c in system.constraints]
     everything += [to_symbols(c.position, coords) for c in system.constraints if c.position is not None]
+    everything += [to_symbols(sp.Matrix(c.friction), coords) for c in system.constraints if c.friction]
     params = set().union(*(e.free_symbols for e in everything)) - internal
     return Equations(
         coordinates=tuple(coords),
@@ -198,9 +199,17 @@ def book_form(eqs: Equations) -> list[sp.Eq]:
         rest = eqs.inertial[i] - sum((eqs.mass_matrix[i, j] * eqs.qdd[j] for j in range(n)), sp.S.Zero)
         lhs = acc + _tidy(rest + eqs.potential_gradient[i], eqs.qd)
         rhs = _tidy(eqs.nonconservative[i], eqs.qd)
-        rhs += sum((_tidy(eqs.constraint_matrix[k, i]) * lam for k, lam in enumerate(eqs.multipliers)), sp.S.Zero)
+        rhs += sum((_tidy(eqs.reaction_matrix[i, k]) * lam for k, lam in enumerate(eqs.multipliers)), sp.S.Zero)
+        rhs = rhs.xreplace(_display_signs(eqs))
         out.append(sp.Eq(to_functions(lhs, eqs.coordinates), to_functions(rhs, eqs.coordinates)))
     return out + constraint_equations(eqs)
+
+
+def _display_signs(eqs: Equations) -> dict:
+    """σ_k of rough constraints shown as sign(λ_k)·sign(v_s,k) — the friction opposes sliding with
+    magnitude μ|N|."""
+    pairs = zip(eqs.rough_signs, eqs.sliding_velocities)
+    return {sig: sp.sign(eqs.multipliers[k]) * sp.sign(v) for sig, (k, v) in pairs}
 
 
 def constraint_equations(eqs: Equations) -> list[sp.Eq]:

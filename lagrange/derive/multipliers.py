@@ -42,12 +42,28 @@ def constraint_blocks(specs, coords, q, qd) -> dict:
         rate = sum((sp.diff(g, q[j]) * qd[j] for j in range(n)), sp.S.Zero) + sp.diff(g, t)
         c.append(-rate)
         phi.append(None if spec.position is None else to_symbols(spec.position, coords))
+    lam = multiplier_symbols(m)
+    B = sp.Matrix(A.T)  # reaction matrix: M q̈ = f + B λ
+    signs, sliding = [], []
+    for k, spec in enumerate(specs):
+        if spec.friction is None:
+            continue
+        mu, vs, normal = spec.friction
+        vs_s = to_symbols(vs, coords)
+        sigma = sp.Symbol(f"_rough{k}", real=True)  # sign(λ_k)·sign(v_s), fixed within a segment
+        signs.append(sigma)
+        sliding.append((k, vs_s))
+        for j in range(n):
+            B[j, k] -= mu * to_symbols(normal, coords) * sigma * sp.diff(vs_s, qd[j])
     return {
+        "reaction_matrix": sp.ImmutableMatrix(B),
+        "rough_signs": tuple(signs),
+        "sliding_velocities": tuple(sliding),
         "constraint_names": tuple(s.name for s in specs),
         "constraint_matrix": sp.ImmutableMatrix(A),
         "constraint_bias": tuple(b),
         "constraint_rhs": tuple(c),
         "constraint_positions": tuple(phi),
-        "multipliers": multiplier_symbols(m),
+        "multipliers": lam,
         "unilateral": tuple(s.unilateral for s in specs),
     }

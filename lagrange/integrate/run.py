@@ -21,6 +21,7 @@ from ..errors import InitialConditionError, IntegrationError, LagrangeError
 from ..model.coordinates import coordinate_name, is_coordinate
 from ..results.trajectory import Trajectory
 from .constrained import STABILIZATIONS, Projector, baumgarte_rhs, consistent_initial
+from .rough import run_rough
 from .scipy_ivp import IMPLICIT_METHODS, SCIPY_METHODS, jacobian_function
 from .stepper import STEPPABLE, step_loop
 
@@ -82,7 +83,7 @@ def _power_function(model: NumericModel):
     eqs = model.equations
     ren = rename_map(eqs)
     ys = sp.symbols(f"y0:{2 * eqs.n}", real=True)
-    ps = [ren[s] for s in eqs.parameters]
+    ps = [ren[s] for s in eqs.numeric_parameters]
     f = sp.lambdify((ren[t], ys, ps, list(eqs.multipliers)), eqs.jacobi_rate.xreplace(ren), modules="math", cse=True)
     p = list(model.params)
     return lambda t_, y, lam=(): f(t_, y, p, list(lam) + [0.0] * (eqs.m - len(lam)))
@@ -280,7 +281,7 @@ def simulate(
                      "stabilization instead of projection")
     crhs = baumgarte_rhs(eqs, *baumgarte) if eqs.m and stabilization == "baumgarte" else None
     if model is None or model.equations is not eqs or crhs is not None:
-        p = params if model is None else dict(zip(eqs.parameters, model.params))
+        p = params if model is None else dict(zip(eqs.numeric_parameters, model.params))
         model = compile_equations(eqs, p, backend=backend if model is None else model.backend, constraint_rhs=crhs)
     y0 = initial_state(eqs.coordinates, initial)
     initial_report = {}
@@ -303,6 +304,10 @@ def simulate(
     try:
         if switches:
             res = run_switched(model, switches, (t0, t1), z0, t_eval, all_events, kwargs, not conservative)
+        elif eqs.is_rough:
+            proj = Projector(model.constraint_functions, eqs.n) if stabilization == "projection" else None
+            res = run_rough(model, lambda mm: _state_function(mm, with_work=not conservative), (t0, t1), z0,
+                            t_eval, all_events, kwargs, proj)
         elif eqs.m and stabilization == "projection":
             proj = Projector(model.constraint_functions, eqs.n)
             res = step_loop(f, (t0, t1), z0, t_eval=t_eval, events=all_events, post_step=proj, **kwargs)
@@ -329,6 +334,7 @@ def simulate(
         work=None if conservative else Y[:, n2].copy(),
         initial=(t0, y0.copy()),
         initial_constraint_violation=initial_report,
+        point_params=getattr(res, "point_params", None),
         switches=(res.switched_model, res.sigma) if switches else (),
         t_events=list(res.t_events) if res.t_events is not None else [],
         y_events=[np.asarray(v)[:, :n2] if len(v) else np.empty((0, n2)) for v in res.y_events]

@@ -31,7 +31,7 @@ def jacobian_function(model: NumericModel) -> Callable:
     n = eqs.n
     ren = rename_map(eqs)
     ys = sp.symbols(f"y0:{2 * n}", real=True)
-    ps = [ren[s] for s in eqs.parameters]
+    ps = [ren[s] for s in eqs.numeric_parameters]
     M = eqs.mass_matrix.xreplace(ren)
     f = eqs.forcing.xreplace(ren)
     dM = [M.diff(y) for y in ys]

@@ -37,7 +37,8 @@ class StepResult:
 
 
 def _event_sign_change(g0: float, g1: float, direction: float) -> bool:
-    if g0 == g1 or np.sign(g0) == np.sign(g1) and g1 != 0:
+    """A zero crossing from g0 to g1 in the requested direction; a start exactly on zero is not one."""
+    if g0 == 0 or g0 == g1 or (np.sign(g0) == np.sign(g1) and g1 != 0):
         return False
     up = g1 > g0
     return direction == 0 or (direction > 0 and up) or (direction < 0 and not up)
@@ -83,8 +84,7 @@ def step_loop(fun, t_span, y0, *, method: str, t_eval, events=None, post_step=No
         for i, ev in enumerate(events):
             g_new = float(ev(t_new, solver.y))
             if _event_sign_change(g_old[i], g_new, getattr(ev, "direction", 0)):
-                te = brentq(lambda s, ev=ev, dense=dense: float(ev(s, dense(s))), t_old, t_new, xtol=1e-14,
-                            rtol=4e-16)
+                te = brentq(lambda s, ev=ev, dense=dense: float(ev(s, dense(s))), t_old, t_new, xtol=1e-14)
                 ye = dense(te)
                 if post_step is not None:
                     ye = post_step(te, ye)

@@ -32,6 +32,7 @@ __all__ = [
     "Holonomic",
     "Nonholonomic",
     "Differential",
+    "Rough",
     "ConstraintSpec",
     "IntegrableConstraintWarning",
     "normalize_constraints",
@@ -57,6 +58,26 @@ class Holonomic:
     expr: sp.Expr
     name: str = ""
     unilateral: bool = False
+
+
+@dataclass(frozen=True)
+class Rough:
+    """A rough holonomic constraint ``φ(q, t) = 0`` with Coulomb friction (Wells 12.5).
+
+    The friction force is ``μ N`` opposite to the sliding velocity ``sliding`` (an expression linear in
+    the velocities, e.g. the speed along a wire); its generalized force is
+    ``−μ N sign(v_s) ∂v_s/∂q̇``. The normal force is ``N = |λ| · normal`` where ``normal`` (default 1)
+    converts the multiplier into the physical normal force: write φ as a signed distance (then
+    ``normal = 1``) or give ``normal = |∇φ|`` in Cartesian terms. The friction depends on the unknown
+    reaction, so it is solved together with the accelerations each step. Sticking (static friction)
+    is not modelled: the simulation stops with an event when the sliding velocity reaches zero.
+    """
+
+    expr: sp.Expr
+    mu: sp.Expr
+    sliding: sp.Expr
+    name: str = ""
+    normal: sp.Expr = sp.S.One
 
 
 @dataclass(frozen=True)
@@ -90,6 +111,7 @@ class ConstraintSpec:
     position: sp.Expr | None
     unilateral: bool = False
     integrable: bool = False
+    friction: tuple | None = None  # (mu, sliding velocity, normal factor) for rough constraints
 
 
 def _velocity_level(phi, coords):
@@ -110,7 +132,17 @@ def normalize_constraints(constraints, coords: Sequence, problems: list) -> tupl
     vel = [q.diff(t) for q in coords]
     for k, c in enumerate(constraints or ()):
         label = getattr(c, "name", "") or f"constraint {k + 1}"
-        declared = type(c).__name__ if isinstance(c, (Holonomic, Nonholonomic, Differential)) else None
+        declared = type(c).__name__ if isinstance(c, (Holonomic, Nonholonomic, Differential, Rough)) else None
+        friction = None
+        if isinstance(c, Rough):
+            vs = sp.sympify(c.sliding)
+            if not vs.atoms(sp.Derivative) or any(sp.diff(vs, q.diff(t)).has(*[p.diff(t) for p in coords])
+                                                   for q in coords):
+                problems.append(f"{label}: the sliding velocity {vs} must be linear in the velocities")
+                continue
+            friction = (sp.sympify(c.mu), vs, sp.sympify(c.normal))
+            c = Holonomic(c.expr, c.name)
+            declared = "Holonomic"
         unilateral = bool(getattr(c, "unilateral", False))
         if isinstance(c, Differential):
             bad = [q for q in c.coefficients if not (is_coordinate(q) and q in coords)]
@@ -147,7 +179,8 @@ def normalize_constraints(constraints, coords: Sequence, problems: list) -> tupl
             if e.free_symbols.isdisjoint({t}) and not e.atoms(sp.core.function.AppliedUndef):
                 problems.append(f"{label} ({e} = 0) involves no coordinate")
                 continue
-            out.append(ConstraintSpec("holonomic", label, _velocity_level(e, coords), e, unilateral))
+            out.append(ConstraintSpec("holonomic", label, _velocity_level(e, coords), e, unilateral,
+                                      friction=friction))
             continue
         # velocity constraint: must be linear in the velocities
         coeffs = [sp.diff(e, v) for v in vel]

@@ -97,7 +97,7 @@ def eliminate(system, solutions: Mapping | Sequence):
             remaining.append(Holonomic(phi, c.name, c.unilateral))
         else:
             remaining.append(Nonholonomic(s(c.velocity), c.name))
-    for q, Y in sub.items():
+    for q in sub:
         used = [c for c in system.constraints if c.kind == "holonomic" and c.position.has(q)]
         if not used:
             problems.append(f"no holonomic constraint involves {coordinate_name(q)}: it is not superfluous")

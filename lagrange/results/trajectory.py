@@ -60,6 +60,7 @@ class Trajectory:
     initial: tuple = ()  # (t0, y0): the work integral starts there, whatever the output times
     switches: tuple = ()  # (switched model, sigma array (m, K)) when sign() switches were integrated
     initial_constraint_violation: dict = field(default_factory=dict)  # user's state before projection
+    point_params: np.ndarray | None = None  # per output point parameter vectors (rough-constraint signs)
 
     @property
     def coordinates(self) -> tuple:
@@ -107,7 +108,7 @@ class Trajectory:
             rows = [sw_model.rhs(ti, yi, np.concatenate([self.model.params, si])).__getitem__(slice(n, None))
                     for ti, yi, si in zip(self.t, self.y, sigma)]
         else:
-            rows = [self.model.fun(ti, yi)[n:] for ti, yi in zip(self.t, self.y)]
+            rows = [self._model_at(i).fun(ti, yi)[n:] for i, (ti, yi) in enumerate(zip(self.t, self.y))]
         return np.array(rows, dtype=float).reshape(len(self.t), n)
 
     @cached_property
@@ -118,7 +119,16 @@ class Trajectory:
         m = self.model.m
         if not m:
             return np.empty((len(self.t), 0))
-        return np.array([self.model.multipliers(ti, yi) for ti, yi in zip(self.t, self.y)]).reshape(len(self.t), m)
+        return np.array([self._model_at(i).multipliers(ti, yi)
+                         for i, (ti, yi) in enumerate(zip(self.t, self.y))]).reshape(len(self.t), m)
+
+    def _model_at(self, i: int):
+        """The model with the parameters in force at output point i (friction signs may change)."""
+        if self.point_params is None:
+            return self.model
+        import dataclasses
+
+        return dataclasses.replace(self.model, params=self.point_params[i])
 
     def multiplier(self, name: str) -> np.ndarray:
         """λ of the constraint called ``name`` over time."""
