@@ -18,6 +18,9 @@ from .model.bodies import Force, Particle
 from .model.constraints import Differential, Holonomic, IntegrableConstraintWarning, Nonholonomic, Rough
 from .model.coordinates import coordinates, delta, parameters
 from .model.eliminate import eliminate
+from .model.inertia import Inertia
+from .model.rigid_body import RigidBody, Torque
+from .model.rotations import EulerAngles, Quaternion, rot_x, rot_y, rot_z
 from .model.system import System
 from .printing import latex, pretty
 
@@ -31,6 +34,14 @@ __all__ = [
     "System",
     "Particle",
     "Force",
+    "RigidBody",
+    "Torque",
+    "Inertia",
+    "EulerAngles",
+    "Quaternion",
+    "rot_x",
+    "rot_y",
+    "rot_z",
     "Holonomic",
     "Nonholonomic",
     "Differential",

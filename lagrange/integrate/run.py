@@ -17,7 +17,7 @@ from scipy.integrate import solve_ivp
 from ..codegen.cse import rename_map
 from ..codegen.numeric import NumericModel, compile_equations, lam_required
 from ..conventions import VELOCITY_SUFFIX, t
-from ..errors import InitialConditionError, IntegrationError, LagrangeError
+from ..errors import InitialConditionError, IntegrationError, LagrangeError, SingularMassMatrixError
 from ..model.coordinates import coordinate_name, is_coordinate
 from ..results.trajectory import Trajectory
 from .constrained import STABILIZATIONS, Projector, baumgarte_rhs, consistent_initial
@@ -105,7 +105,8 @@ def _collapse_error(model: NumericModel, res, t0: float, y0) -> IntegrationError
     return IntegrationError(
         f"integration stopped at t={last_t:.9g} ({_state_text(model, last_y)}): {res.message} The step size "
         "collapsed near this state: a singularity of the model (a coordinate reaching a division by zero), "
-        "a blow-up, or stiffness (try method='LSODA' or 'Radau'). Results up to this time are lost; shorten "
+        "a blow-up, stiffness (try method='LSODA' or 'Radau'), or Euler angles passing through gimbal lock "
+        "(θ = 0 or π: use a Quaternion orientation). Results up to this time are lost; shorten "
         "t_span or use a terminal event to stop before it.",
         t=last_t,
         state=dict(zip(model.equations.coordinates, last_y)),
@@ -192,6 +193,37 @@ def _contact_message(model: NumericModel, res) -> str:
     fired = [(names[i], tev[0]) for i, tev in enumerate(list(res.t_events)[-len(names):]) if len(tev)]
     return "".join(f" Contact lost: the force of {nm} reached zero at t={te:.9g}; switch models there."
                    for nm, te in fired)
+
+
+class GimbalLockWarning(UserWarning):
+    """Euler angles near θ = 0 or π: the mass matrix is nearly singular (gimbal lock)."""
+
+
+def _gimbal_hint(system) -> str:
+    from ..model.rotations import EulerAngles
+
+    if any(isinstance(getattr(b, "orientation", None), EulerAngles) for b in system.bodies):
+        return (" Gimbal lock: Wells' Euler angles are singular at θ = 0 or π (only ψ + φ is defined there). "
+                "Use RigidBody(..., orientation=Quaternion(q0, q1, q2, q3)) — it is regular everywhere (a "
+                "sleeping top) — or tilt the reference axes.")
+    return ""
+
+
+def _check_initial_mass_matrix(system, model: NumericModel, t0: float, y0) -> None:
+    """Raise on a singular mass matrix (naming coordinates, with a gimbal-lock hint for Euler angles) and
+    warn when it is nearly singular."""
+    try:
+        model.fun(t0, y0)
+    except SingularMassMatrixError as exc:
+        raise SingularMassMatrixError(str(exc) + _gimbal_hint(system)) from None
+    hint = _gimbal_hint(system)
+    if hint and not model.m:
+        M, _ = model.mass_and_forcing(t0, y0)
+        if np.linalg.cond(M) > 1e8:
+            import warnings
+
+            warnings.warn(f"the mass matrix is nearly singular at the initial state (condition number "
+                          f"{np.linalg.cond(M):.2g}).{hint}", GimbalLockWarning, stacklevel=3)
 
 
 def simulate(
@@ -291,7 +323,7 @@ def simulate(
         t_eval = np.linspace(t0, t1, n_points)
     t_eval = np.asarray(t_eval, dtype=float)
     if not switches:
-        model.fun(t0, y0)  # raises SingularMassMatrixError naming the coordinates
+        _check_initial_mass_matrix(system, model, t0, y0)
     conservative = eqs.is_conservative
     n2 = 2 * eqs.n
     f = _state_function(model, with_work=not conservative)

@@ -7,7 +7,8 @@ r"""Generalized forces from the three forms Wells uses.
              + F_{y_i}\frac{\partial y_i}{\partial q_r} + F_{z_i}\frac{\partial z_i}{\partial q_r}\Big)
 
    with t and the other coordinates held fixed.
-3. A virtual-work expression :math:`\delta W = \sum_r F_{q_r}\,\delta q_r` (Wells 4.12) written with
+3. Torques on rigid bodies (:class:`~lagrange.model.rigid_body.Torque`), ``F_q = τ·∂ω/∂q̇`` (Wells 8.12).
+4. A virtual-work expression :math:`\delta W = \sum_r F_{q_r}\,\delta q_r` (Wells 4.12) written with
    :func:`~lagrange.model.coordinates.delta` or the ``delta_q`` symbols: the coefficients are the F_q.
 
 The three forms may be combined in a list; contributions add.
@@ -19,6 +20,7 @@ from collections.abc import Mapping, Sequence
 
 import sympy as sp
 
+from ..conventions import t
 from .bodies import Force
 from .coordinates import (
     coordinate_name,
@@ -70,6 +72,12 @@ def _from_virtual_work(expr, coords: Sequence, problems: list) -> dict:
     return out
 
 
+def _is_torque(item) -> bool:
+    from .rigid_body import Torque
+
+    return isinstance(item, Torque)
+
+
 def generalized_forces(forces, coords: Sequence, problems: list) -> dict:
     """Normalize ``forces`` to ``{q: F_q}`` over ``coords`` (missing entries are 0).
 
@@ -93,6 +101,11 @@ def generalized_forces(forces, coords: Sequence, problems: list) -> dict:
                     )
                     continue
                 total[q] += sp.sympify(value)
+        elif _is_torque(item):
+            w = to_symbols(item.angular_velocity(), coords)
+            for q in coords:
+                dw = to_functions(w.diff(to_symbols(q.diff(t), coords)), coords)
+                total[q] += (item.vector.T * dw)[0, 0]
         elif isinstance(item, Force):
             try:
                 for q, v in _from_force(item, coords).items():

@@ -178,6 +178,7 @@ class System:
         F = generalized_forces(raw_forces, coords, problems) if coords else {}
 
         specs = ()
+        constraints = list(constraints or ()) + [c for b in bodies for c in getattr(b, "constraints", tuple)()]
         if constraints:
             raw = [_substitute_constraint(c, presc) for c in constraints] if presc else list(constraints)
             specs = normalize_constraints(raw, coords, problems)
@@ -408,6 +409,8 @@ def _substitute_forces(forces, presc):
             out.append({k: sub(v) for k, v in item.items()})
         elif isinstance(item, Force):
             out.append(Force(item.at.subs(presc).doit(), item.vector.subs(presc).doit(), item.name))
+        elif type(item).__name__ == "Torque":
+            out.append(type(item)(item.body.subs(presc), item.vector.subs(presc).doit(), item.frame))
         else:
             out.append(sub(item))
     return out

@@ -1,0 +1,151 @@
+r"""Rigid bodies: Wells' general kinetic energy (8.10) and torques as generalized forces (8.12).
+
+With O a point fixed in the body (the body origin, inertial position ``origin``), ``r̄`` the centre of
+mass relative to O along the body axes, J the inertia tensor about O along the body axes (Wells'
+positive products, :mod:`lagrange.model.inertia`), ω and v₀ along the body axes:
+
+.. math::
+
+    T = \tfrac12 M v_0^2 + \tfrac12\,\omega^{\mathsf T} J\,\omega
+        + M\, v_0 \cdot (\omega \times \bar r) \qquad \text{(Wells 8.10)}
+
+The last term vanishes when O is the centre of mass; the first and last when O is fixed. A torque τ on
+the body (along the body axes, or the inertial axes with ``frame="inertial"``) has the generalized force
+``F_q = τ · ∂ω/∂q̇`` (Wells 8.12); a force at a body point is an ordinary :class:`~lagrange.Force` at
+``body.point(r_body)``.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+import sympy as sp
+
+from ..conventions import t
+from .bodies import as_vector
+from .inertia import Inertia
+from .rotations import EulerAngles, Quaternion, as_rotation, body_angular_velocity
+
+__all__ = ["RigidBody", "Torque"]
+
+
+def _tensor(inertia) -> sp.Matrix:
+    if isinstance(inertia, Inertia):
+        return inertia.tensor
+    if isinstance(inertia, sp.MatrixBase):
+        J = sp.Matrix(inertia)
+        if J.shape != (3, 3) or J != J.T:
+            raise ValueError("an inertia matrix must be a symmetric 3x3 matrix (the signed tensor)")
+        return J
+    if isinstance(inertia, Sequence) and len(inertia) == 3:
+        return sp.diag(*[sp.sympify(v) for v in inertia])
+    raise ValueError("inertia must be an Inertia, a signed 3x3 tensor or three principal moments (I_x, I_y, I_z)")
+
+
+class RigidBody:
+    """A rigid body for ``System(bodies=...)``.
+
+    Parameters
+    ----------
+    mass : expression
+    inertia : :class:`~lagrange.model.inertia.Inertia`, signed 3x3 tensor, or (I_x, I_y, I_z) principal
+        moments — about the body origin O, along the body axes
+    origin : inertial position of O (1–3 expressions in the coordinates and t); default the fixed origin
+    orientation : :class:`EulerAngles` (Wells' z-x-z), :class:`Quaternion`, or a rotation matrix R whose
+        columns are the body axes in inertial components; default: axes parallel to the inertial ones
+    com : centre of mass relative to O along the body axes (default O itself)
+    name : label
+
+    >>> from lagrange import coordinates, parameters, t
+    >>> from lagrange.model.rotations import rot_z
+    >>> th = coordinates("theta"); I = parameters("I")
+    >>> RigidBody(1, (I, I, I), orientation=rot_z(th)).kinetic_energy()
+    I*Derivative(theta(t), t)**2/2
+    """
+
+    def __init__(self, mass, inertia, origin=(0, 0, 0), orientation=None, com=(0, 0, 0), name: str = ""):
+        self.mass = sp.sympify(mass)
+        self.inertia = _tensor(inertia)
+        self.origin = as_vector(origin, f"origin of rigid body {name!r}")
+        self.orientation = orientation if orientation is not None else sp.eye(3)
+        self.R = as_rotation(self.orientation)
+        self.com = as_vector(com, f"centre of mass of rigid body {name!r}")
+        self.name = name
+
+    # --- kinematics -----------------------------------------------------------------------------
+    @property
+    def angular_velocity(self) -> sp.Matrix:
+        """ω along the body axes (Wells 8.11 for Euler angles)."""
+        return body_angular_velocity(self.orientation)
+
+    @property
+    def space_angular_velocity(self) -> sp.Matrix:
+        return self.R * self.angular_velocity
+
+    def point(self, r_body) -> sp.Matrix:
+        """Inertial position of the body point with body coordinates ``r_body`` relative to O."""
+        return self.origin + self.R * as_vector(r_body, "body point")
+
+    @property
+    def centre_of_mass(self) -> sp.Matrix:
+        return self.point(self.com)
+
+    # --- energy ---------------------------------------------------------------------------------
+    def kinetic_energy(self) -> sp.Expr:
+        """Wells (8.10) with v₀ and ω along the body axes."""
+        w = self.angular_velocity
+        v0 = self.origin.diff(t)
+        T = sp.Rational(1, 2) * self.mass * (v0.T * v0)[0, 0] + sp.Rational(1, 2) * (w.T * self.inertia * w)[0, 0]
+        if any(c != 0 for c in self.com):
+            v0_body = self.R.T * v0
+            T += self.mass * (v0_body.T * w.cross(self.com))[0, 0]
+        return T
+
+    def constraints(self) -> tuple:
+        """Constraints the orientation brings (the unit norm of a quaternion)."""
+        return self.orientation.constraints() if isinstance(self.orientation, (EulerAngles, Quaternion)) else ()
+
+    def position_vectors(self) -> tuple[sp.Matrix, ...]:
+        return (self.origin, self.centre_of_mass)
+
+    def subs(self, mapping) -> RigidBody:
+        def s(x):
+            return sp.sympify(x).subs(mapping).doit()
+
+        orient = self.orientation
+        if isinstance(orient, EulerAngles):
+            orient = EulerAngles(s(orient.psi), s(orient.theta), s(orient.phi))
+        elif isinstance(orient, Quaternion):
+            orient = Quaternion(*(s(c) for c in orient.components), name=orient.name)
+        else:
+            orient = self.R.subs(mapping).doit()
+        return RigidBody(s(self.mass), self.inertia.subs(mapping), self.origin.subs(mapping).doit(), orient,
+                         self.com.subs(mapping), self.name)
+
+    def __repr__(self) -> str:
+        label = f" {self.name!r}" if self.name else ""
+        return f"RigidBody{label}(mass={self.mass})"
+
+
+@dataclass(frozen=True, eq=False)
+class Torque:
+    """A torque ``vector`` acting on ``body``: along its body axes (default) or the inertial axes.
+
+    Generalized force ``F_q = τ · ∂ω/∂q̇`` (Wells 8.12). For an internal motor between two bodies give
+    equal and opposite torques on both.
+    """
+
+    body: RigidBody
+    vector: sp.Matrix
+    frame: str = "body"
+
+    def __init__(self, body: RigidBody, vector, frame: str = "body"):
+        if frame not in ("body", "inertial"):
+            raise ValueError("Torque frame must be 'body' or 'inertial'")
+        object.__setattr__(self, "body", body)
+        object.__setattr__(self, "vector", as_vector(vector, "torque"))
+        object.__setattr__(self, "frame", frame)
+
+    def angular_velocity(self) -> sp.Matrix:
+        return self.body.angular_velocity if self.frame == "body" else self.body.space_angular_velocity

@@ -1,0 +1,164 @@
+r"""Orientations of rigid bodies: elementary rotations, Wells' Euler angles, quaternions, angular velocity.
+
+Convention (stated once)
+------------------------
+An orientation is a rotation matrix ``R`` whose **columns are the body axes x, y, z expressed in the
+inertial frame** (it maps body components to inertial components: ``r_inertial = R r_body``). Wells'
+direction cosines are its transpose, ``α_ij = R_ji`` (row i = body axis, column j = inertial axis; Table
+8.2). The angular velocity's body components follow from ``Rᵀ Ṙ = [ω]×`` and its inertial components
+from ``Ṙ Rᵀ = [ω]×``.
+
+Wells' Euler angles (Fig. 8-16, z-x-z): ψ precession about Z1, θ nutation about the line of nodes, φ spin
+about the body z; ``R = R_z(ψ) R_x(θ) R_z(φ)`` and (Wells 8.11)
+
+.. math:: \omega_x = \dot\psi s\theta s\phi + \dot\theta c\phi,\quad
+          \omega_y = \dot\psi s\theta c\phi - \dot\theta s\phi,\quad
+          \omega_z = \dot\phi + \dot\psi c\theta .
+
+The Euler-angle mass matrix is singular at θ = 0, π (gimbal lock: only ψ + φ is defined). The remedy is
+:class:`Quaternion` orientation — four coordinates with the unit-norm constraint, which the body adds to
+the system itself — valid at every orientation (a sleeping top).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import sympy as sp
+
+from ..conventions import t
+
+__all__ = [
+    "rot_x",
+    "rot_y",
+    "rot_z",
+    "EulerAngles",
+    "Quaternion",
+    "as_rotation",
+    "body_angular_velocity",
+    "space_angular_velocity",
+]
+
+
+def rot_x(a) -> sp.Matrix:
+    """Rotation by angle ``a`` about x (columns: the rotated axes in the old frame)."""
+    c, s = sp.cos(a), sp.sin(a)
+    return sp.Matrix([[1, 0, 0], [0, c, -s], [0, s, c]])
+
+
+def rot_y(a) -> sp.Matrix:
+    """Rotation by angle ``a`` about y."""
+    c, s = sp.cos(a), sp.sin(a)
+    return sp.Matrix([[c, 0, s], [0, 1, 0], [-s, 0, c]])
+
+
+def rot_z(a) -> sp.Matrix:
+    """Rotation by angle ``a`` about z."""
+    c, s = sp.cos(a), sp.sin(a)
+    return sp.Matrix([[c, -s, 0], [s, c, 0], [0, 0, 1]])
+
+
+@dataclass(frozen=True)
+class EulerAngles:
+    """Wells' Euler angles (z-x-z): ψ precession, θ nutation, φ spin (Fig. 8-16, Table 8.2).
+
+    >>> from lagrange import coordinates
+    >>> psi, theta, phi = coordinates("psi theta phi")
+    >>> EulerAngles(psi, theta, phi).matrix.T[0, 2]  # α13 = sθ sφ
+    sin(phi(t))*sin(theta(t))
+    """
+
+    psi: sp.Expr
+    theta: sp.Expr
+    phi: sp.Expr
+
+    @property
+    def matrix(self) -> sp.Matrix:
+        return rot_z(self.psi) * rot_x(self.theta) * rot_z(self.phi)
+
+    def body_angular_velocity(self) -> sp.Matrix:
+        """Wells (8.11), in closed form."""
+        ps, th, ph = self.psi, self.theta, self.phi
+        pd, td, fd = ps.diff(t), th.diff(t), ph.diff(t)
+        return sp.Matrix([
+            pd * sp.sin(th) * sp.sin(ph) + td * sp.cos(ph),
+            pd * sp.sin(th) * sp.cos(ph) - td * sp.sin(ph),
+            fd + pd * sp.cos(th),
+        ])
+
+    def constraints(self) -> tuple:
+        return ()
+
+
+@dataclass(frozen=True)
+class Quaternion:
+    """Unit quaternion orientation ``(q0, q1, q2, q3)`` (scalar first); adds ``Σ q_i² − 1 = 0``.
+
+    ``R = (q0² − |v|²) I + 2 v vᵀ + 2 q0 [v]×`` and ``ω_body = 2 E q̇`` with
+    ``E = [[−q1, q0, q3, −q2], [−q2, −q3, q0, q1], [−q3, q2, −q1, q0]]``. The kinetic energy does not
+    depend on the velocity along q itself, so the mass matrix is singular alone; the norm constraint
+    makes the augmented system regular (see :mod:`lagrange.derive.multipliers`).
+    """
+
+    q0: sp.Expr
+    q1: sp.Expr
+    q2: sp.Expr
+    q3: sp.Expr
+    name: str = "unit quaternion"
+
+    @property
+    def components(self) -> tuple:
+        return (self.q0, self.q1, self.q2, self.q3)
+
+    @property
+    def matrix(self) -> sp.Matrix:
+        q0, q1, q2, q3 = self.components
+        return sp.Matrix([
+            [q0**2 + q1**2 - q2**2 - q3**2, 2 * (q1 * q2 - q0 * q3), 2 * (q1 * q3 + q0 * q2)],
+            [2 * (q1 * q2 + q0 * q3), q0**2 - q1**2 + q2**2 - q3**2, 2 * (q2 * q3 - q0 * q1)],
+            [2 * (q1 * q3 - q0 * q2), 2 * (q2 * q3 + q0 * q1), q0**2 - q1**2 - q2**2 + q3**2],
+        ])
+
+    def body_angular_velocity(self) -> sp.Matrix:
+        q0, q1, q2, q3 = self.components
+        E = sp.Matrix([[-q1, q0, q3, -q2], [-q2, -q3, q0, q1], [-q3, q2, -q1, q0]])
+        return 2 * E * sp.Matrix([q.diff(t) for q in self.components])
+
+    def constraints(self) -> tuple:
+        from .constraints import Holonomic
+
+        return (Holonomic(sum(q**2 for q in self.components) - 1, self.name),)
+
+
+def as_rotation(orientation) -> sp.Matrix:
+    """The rotation matrix of an orientation (EulerAngles, Quaternion or a 3x3 matrix)."""
+    if isinstance(orientation, (EulerAngles, Quaternion)):
+        return orientation.matrix
+    R = sp.Matrix(orientation)
+    if R.shape != (3, 3):
+        raise ValueError(f"an orientation must be a 3x3 rotation matrix, got shape {R.shape}")
+    return R
+
+
+def _vee(W: sp.Matrix) -> sp.Matrix:
+    return sp.Matrix([W[2, 1], W[0, 2], W[1, 0]])
+
+
+def _compact(e):
+    e = sp.expand(e)
+    if sp.count_ops(e) < 400:
+        e = sp.trigsimp(e)
+    return e
+
+
+def body_angular_velocity(orientation) -> sp.Matrix:
+    """ω along the body axes: closed forms for EulerAngles and Quaternion, ``vee(Rᵀ Ṙ)`` otherwise."""
+    if isinstance(orientation, (EulerAngles, Quaternion)):
+        return orientation.body_angular_velocity()
+    R = as_rotation(orientation)
+    return _vee(R.T * R.diff(t)).applyfunc(_compact)
+
+
+def space_angular_velocity(orientation) -> sp.Matrix:
+    """ω along the inertial axes, ``R ω_body``."""
+    return (as_rotation(orientation) * body_angular_velocity(orientation)).applyfunc(_compact)
