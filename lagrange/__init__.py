@@ -3,6 +3,11 @@
 Public API (explicit re-exports only). Conventions: :mod:`lagrange.conventions`.
 """
 
+from .analysis.driving import actuator_forces, driving_forces, static_equilibrium
+from .analysis.hamilton import hamiltonian
+from .analysis.small_oscillations import characteristic_roots, equilibria, linearize, normal_modes
+from .analysis.steady_motion import oscillations_about_steady_motion, routhian, steady_motion_conditions
+from .analysis.variational import action, euler_lagrange, variational_integrate
 from .conventions import t
 from .errors import (
     BackendError,
@@ -49,6 +54,20 @@ __all__ = [
     "IntegrableConstraintWarning",
     "eliminate",
     "latex",
+    "equilibria",
+    "linearize",
+    "normal_modes",
+    "characteristic_roots",
+    "routhian",
+    "steady_motion_conditions",
+    "oscillations_about_steady_motion",
+    "driving_forces",
+    "actuator_forces",
+    "static_equilibrium",
+    "hamiltonian",
+    "euler_lagrange",
+    "action",
+    "variational_integrate",
     "pretty",
     "LagrangeError",
     "DeclarationError",

@@ -133,6 +133,57 @@ def _cmd_verify(args) -> int:
     return 1 if failed else 0
 
 
+def _cmd_modes(args) -> int:
+    import numpy as np
+
+    from .analysis.small_oscillations import characteristic_roots, linearize, normal_modes
+    from .printing import pretty
+    from .spec.loader import load_spec
+
+    spec = load_spec(args.spec)
+    if spec.system is None:
+        raise SpecError(f"{args.spec}: this problem has no equations of motion")
+    about = _kv(args.about, "about")
+    lin = linearize(spec.system, about)
+    print(f"linearized about {about or 'q = 0'}:  a s'' + b s' + c s = F")
+    for label, mat in (("a", lin.a), ("b", lin.b), ("c", lin.c)):
+        print(f"{label} =\n{pretty(mat)}")
+    if lin.a.shape[0] <= 3 and all(v == 0 for v in lin.b):
+        print(f"frequency equation |a w^2 - c| = 0:\n{pretty(sp_factor(lin.frequency_equation()))} = 0")
+    params = {**spec.params, **_kv(args.param, "param")}
+    if params:
+        modes = normal_modes(lin, params)
+        print("\nangular frequencies:", np.array2string(modes.omega, precision=8))
+        print("periods:", np.array2string(modes.periods, precision=8))
+        print("mode shapes (columns, normalized to a):\n", np.array2string(modes.shapes, precision=6))
+        if any(v != 0 for v in lin.b):
+            print("characteristic roots (with damping/gyroscopic terms):",
+                  np.array2string(characteristic_roots(lin, params), precision=6))
+    return 0
+
+
+def sp_factor(e):
+    import sympy
+
+    return sympy.factor(e)
+
+
+def _cmd_hamiltonian(args) -> int:
+    from .analysis.hamilton import hamiltonian
+    from .printing import pretty
+    from .spec.loader import load_spec
+
+    spec = load_spec(args.spec)
+    if spec.system is None:
+        raise SpecError(f"{args.spec}: this problem has no equations of motion")
+    h = hamiltonian(spec.system)
+    print(f"H =\n{pretty(h.H)}")
+    for q, p, qd, pd in zip(h.q, h.p, h.qdot, h.pdot):
+        print(f"\nd{q}/dt =\n{pretty(qd)}")
+        print(f"d{p}/dt =\n{pretty(pd)}")
+    return 0
+
+
 def _parser() -> argparse.ArgumentParser:
     ap = argparse.ArgumentParser(
         prog="lagrange",
@@ -165,6 +216,16 @@ def _parser() -> argparse.ArgumentParser:
     p.add_argument("--initial", action="append", metavar="NAME=VALUE", help="override an initial value (x, x_dot)")
     p.add_argument("-q", "--quiet", action="store_true", help="do not print the equations first")
     p.set_defaults(func=_cmd_simulate)
+
+    p = sub.add_parser("modes", help="linearize about an equilibrium: matrices, frequencies, mode shapes")
+    p.add_argument("spec", help=spec_help)
+    p.add_argument("--about", action="append", metavar="q=VALUE", help="equilibrium coordinate values (default 0)")
+    p.add_argument("--param", action="append", metavar="NAME=VALUE", help="parameter values for numbers")
+    p.set_defaults(func=_cmd_modes)
+
+    p = sub.add_parser("hamiltonian", help="print H and Hamilton's canonical equations")
+    p.add_argument("spec", help=spec_help)
+    p.set_defaults(func=_cmd_hamiltonian)
 
     p = sub.add_parser("verify", help="check corpus problems against the book's answers")
     p.add_argument("ids", nargs="*", help="problem ids (default: all)")

@@ -46,7 +46,10 @@ PROBLEM = Problem(
                 sp.Eq(m * (y.diff(t, 2) + 2 * w * xd * s + w**2 * s * ((R + z) * c - y * s)), Fy),
                 sp.Eq(m * (z.diff(t, 2) - 2 * w * xd * c - w**2 * c * ((R + z) * c - y * s)), Fz),
             ],
-            per_equation=True,
+            # per_equation=False: the harness's ratio test uses sp.cancel, which does not see
+            # y1 cos^2(Phi) - y1 = -y1 sin^2(Phi); the mass matrix is m*I, so the acceleration
+            # comparison already checks each printed equation on its own coordinate.
+            per_equation=False,
         ),
         Quantity("velocity components (14.25) along X1, Y1, Z1", _velocity_on_earth_axes, v_book),
     ],

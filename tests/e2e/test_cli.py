@@ -50,3 +50,11 @@ def test_errors_are_one_line(args, message):
 def test_verify_runs_the_book_checks():
     out = run("verify", "ex3.2", "ex6.1")
     assert out.returncode == 0 and "0 failed" in out.stdout
+
+
+def test_modes_and_hamiltonian_commands():
+    out = run("modes", "sec1.9")
+    assert out.returncode == 0, out.stderr
+    assert "8.16496581" in out.stdout and "19.36491673" in out.stdout  # Wells: 8.16 and 19.37 rad/s
+    out = run("hamiltonian", "ex3.3")
+    assert out.returncode == 0 and "H =" in out.stdout and "dp_theta/dt =" in out.stdout

@@ -1,0 +1,2 @@
+"""Analysis tools: small oscillations, steady motion and the Routhian, driving forces and statics,
+Hamilton's equations and principle."""
