@@ -1,4 +1,4 @@
-"""Wells, Example 8.7 and Problem 8.5 — slender rod (mass M, length L) pivoted at O on a horizontal arm of radius R
+"""Wells, Example 8.7 — slender rod (mass M, length L) pivoted at O on a horizontal arm of radius R
 turning by θ1; the rod swings by θ2 from the vertical in the vertical plane containing the arm.
 
 Axes: Z1 vertical pointing DOWN (so the hanging rod is along +Z1 at θ2 = 0), θ1 about Z1. Body axes (Ex 9.4): Y
@@ -9,7 +9,7 @@ About O: I_x = I_z = ML²/3, I_y = 0; ȳ = L/2. Gravity: V = −M g ȳ cθ2 (Ex 
 import sympy as sp
 
 from lagrange import RigidBody, System, coordinates, parameters, t
-from lagrange.corpus import KineticEnergy, Problem, Quantity, Simulation
+from lagrange.corpus import KineticEnergy, Problem, Simulation
 from lagrange.model.rotations import rot_z
 
 th1, th2 = coordinates("theta1 theta2")
@@ -26,8 +26,6 @@ system = System([th1, th2], bodies=[rod], V=-M * g * rod.centre_of_mass[2], name
 
 l_ = sp.symbols("l", positive=True)
 T_integral = sp.Rational(1, 2) * sp.integrate(((R + l_ * s2) ** 2 * t1d**2 + l_**2 * t2d**2) * M / L, (l_, 0, L))
-w = sp.sqrt(t1d**2 + t2d**2)
-W_BODY, W_SPACE = rod.angular_velocity, rod.space_angular_velocity  # computed once (rotation-matrix chain)
 
 PROBLEMS = [
     Problem(
@@ -45,22 +43,5 @@ PROBLEMS = [
                               initial={th1: 0.0, th2: 0.3, t1d: 2.0, t2d: 0.0}, t_end=5.0),
         correction="The figure's axes are rebuilt: Z1 down so that V = -M g ybar c(theta2) as in Ex 9.4; the gravity is "
         "added for the simulation (the book gives T only).",
-    ),
-    Problem(
-        id="p8.5",
-        title="Rod of Ex 8.7: body and space components and direction cosines of omega",
-        chapter=8,
-        source="Wells, Problem 8.5 (with Ex 9.4)",
-        system=system,
-        answers=[
-            Quantity("omega along the body axes", lambda s: W_BODY, [-t2d, t1d * c2, t1d * s2]),
-            Quantity("omega^2", lambda s: sum(v**2 for v in W_BODY), t1d**2 + t2d**2),
-            Quantity("body direction cosines l, m, n", lambda s: W_BODY / w,
-                     [-t2d / w, t1d * c2 / w, t1d * s2 / w]),
-            Quantity("space direction cosines l1, m1, n1", lambda s: W_SPACE / w,
-                     [-t2d * sp.sin(th1) / w, t2d * sp.cos(th1) / w, t1d / w]),
-        ],
-        simulation=Simulation(params={M: 1.0, L: 1.0, R: 0.5, g: 9.81},
-                              initial={th1: 0.0, th2: 0.3, t1d: 2.0, t2d: 0.0}, t_end=5.0),
     ),
 ]

@@ -3,7 +3,7 @@ circular cylinder of radius R (Fig. 12-7): both ends on the cylinder, Coulomb fr
 
 import sympy as sp
 
-from lagrange import Holonomic, Particle, Rough, System, coordinates, eliminate, parameters, t
+from lagrange import Holonomic, Rough, System, coordinates, eliminate, parameters, t
 from lagrange.corpus import ConstraintForce, EquationsOfMotion, Problem, Quantity, Simulation
 
 r, th, al = coordinates("r theta alpha")
@@ -68,10 +68,10 @@ def _thdd_sliding_down(s):
         q = q.subs({r: r0, al: th})
         # the end distances sqrt(r^2 + l^2 ...) reduce to R on the cylinder
         q = q.replace(lambda a: a.is_Pow and a.exp.is_Rational and a.exp.q == 2,
-                      lambda a: sp.Pow(sp.trigsimp(sp.factor(a.base)), a.exp))
+                      lambda a: sp.Pow(sp.factor(sp.expand(sp.expand(a.base).subs(sp.sin(beta) ** 2, 1 - sp.cos(beta) ** 2))), a.exp))
         res.append(q)
     A, rhs = sp.linear_eq_to_matrix(res, [th.diff(t, 2), *lams])
-    return A.LUsolve(rhs)[0]
+    return sp.cancel(sp.together(A.LUsolve(rhs)[0]))
 
 
 rr = r0  # the book's r (constant on the cylinder)

@@ -31,7 +31,6 @@ T_END = 0.5
 # +x (the bead slides down, xd < 0). The engine's constraint force is lambda * grad(phi) = lambda * nrm * (unit
 # normal), so lambda = f / nrm (f > 0 along the run: the wire is concave up and pushes the bead upward), and
 # the engine friction -mu |lambda| nrm sign(v) (unit tangent) equals the book's +mu f (unit tangent) for v < 0.
-lam = sp.Symbol("lambda_1")
 
 
 def _xdd_sliding_down(s):

@@ -246,6 +246,7 @@ def simulate(
     stabilization: str = "projection",
     baumgarte: tuple = (10.0, 10.0),
     project_initial: bool = True,
+    step: float | None = None,
 ) -> Trajectory:
     """Integrate Lagrange's equations of ``system``.
 
@@ -255,7 +256,10 @@ def simulate(
     initial : dict keyed by coordinates, their velocities (``q.diff(t)``) or names (``"q"``, ``"q_dot"``)
     params : dict of parameter values keyed by symbol or name
     method : one of ``DOP853`` (default), ``RK45``, ``RK23``, ``LSODA``, ``Radau``, ``BDF`` or ``auto``
-        The implicit methods get the generated Jacobian.
+        (the implicit ones get the generated Jacobian), or a fixed-step geometric integrator for
+        conservative unconstrained systems — ``midpoint``, ``gl4``, ``gl6`` (Gauss–Legendre, symplectic),
+        ``verlet`` (Störmer–Verlet, separable T) or ``dg`` (discrete gradient, energy-conserving) — with
+        ``step=h``; see :mod:`lagrange.integrate.base`.
     rtol, atol : tolerances passed to scipy
     t_eval : output times; default ``n_points`` equally spaced times
     events : scipy-style event callables ``event(t, y)`` (``terminal``/``direction`` attributes honoured)
@@ -304,8 +308,17 @@ def simulate(
     why = ""
     if method == "auto":
         method, why = choose_method(eqs)
+    from .fixed import GEOMETRIC, integrate_fixed
+
+    if method in GEOMETRIC:
+        if t_eval is not None or events:
+            raise TypeError(f"{method} is a fixed-step integrator: it takes step= and n_points=, not t_eval/events")
+        y0 = initial_state(eqs.coordinates, initial)
+        return integrate_fixed(system, (t0, t1), y0, params, method=method, step=step, n_points=n_points,
+                               model=model)
     if method not in SCIPY_METHODS:
-        raise TypeError(f"unknown method {method!r}; choose one of {', '.join(SCIPY_METHODS)} or 'auto'")
+        raise TypeError(f"unknown method {method!r}; choose one of {', '.join(SCIPY_METHODS)}, "
+                        f"{', '.join(GEOMETRIC)} (fixed step) or 'auto'")
     notes = [f"auto: {why}"] if why else []
     if eqs.m and stabilization == "projection" and method not in STEPPABLE:
         stabilization = "baumgarte"

@@ -1,0 +1,75 @@
+"""Fixed-step integrators: the extension point.
+
+A scheme subclasses :class:`Integrator` and implements ``_step_impl(t, z, h) -> (z_new, iterations)``.
+Rules a scheme must follow:
+
+1. It works on canonical variables ``z = (q, p)`` through the :class:`HamiltonianModel` it is given
+   (``field``, ``field_jacobian``, ``grad``, ``hess``, ``H``) and nothing else.
+2. Its class attributes state its ``order``, whether it is ``symplectic`` and whether it conserves energy
+   exactly (``energy_conserving``), and what structure it ``requires`` (``"separable"`` for explicit
+   splitting methods); :meth:`check` verifies the requirement before a run.
+3. Implicit schemes solve their equations with Newton's method using the generated Hessian, to the
+   tolerance ``tol`` (relative), and raise :class:`~lagrange.errors.IntegrationError` with the time and
+   state when Newton fails — never return an unconverged step.
+4. The scheme's coefficients are data at the top of its file, with the reference.
+"""
+
+from __future__ import annotations
+
+from typing import ClassVar
+
+import numpy as np
+
+from ..errors import IntegrationError, LagrangeError
+from .hamiltonian_model import HamiltonianModel
+
+__all__ = ["Integrator", "newton"]
+
+
+def newton(residual, jacobian, x0, *, tol: float, max_iter: int, where: str):
+    """Newton's method; returns (x, iterations). Converged when the step is at the round-off floor or
+    the residual is below ``tol`` relative to the size of x."""
+    x = np.array(x0, dtype=float)
+    for it in range(1, max_iter + 1):
+        r = residual(x)
+        scale = 1.0 + float(np.max(np.abs(x)))
+        if float(np.max(np.abs(r))) <= tol * scale:
+            return x, it - 1
+        dx = np.linalg.solve(jacobian(x), r)
+        x -= dx
+        if float(np.max(np.abs(dx))) <= 4e-16 * scale:
+            return x, it
+    raise IntegrationError(f"Newton's method did not converge in {max_iter} iterations {where}; reduce the step")
+
+
+class Integrator:
+    """Base class of the fixed-step geometric integrators (see the module docstring for the rules)."""
+
+    name: ClassVar[str] = ""
+    order: ClassVar[int] = 0
+    symplectic: ClassVar[bool] = False
+    energy_conserving: ClassVar[bool] = False
+    requires: ClassVar[str | None] = None
+
+    def __init__(self, model: HamiltonianModel, *, tol: float = 1e-13, max_iter: int = 25):
+        self.model = model
+        self.tol = tol
+        self.max_iter = max_iter
+        self.check()
+
+    def check(self) -> None:
+        if self.requires == "separable" and not self.model.separable:
+            raise LagrangeError(
+                f"{self.name} needs a separable Hamiltonian H = ½ pᵀM⁻¹p + V(q) with constant M; this system's "
+                "kinetic energy depends on the coordinates or t: use 'midpoint', 'gl4' or 'gl6'"
+            )
+
+    def step(self, t: float, z: np.ndarray, h: float) -> tuple[np.ndarray, int]:
+        """One step of size ``h`` from ``(t, z)``; returns the new state and the Newton iterations used."""
+        try:
+            return self._step_impl(t, z, h)
+        except IntegrationError as exc:
+            raise IntegrationError(f"{self.name} at t={t:.9g}: {exc}", t=t) from None
+
+    def _step_impl(self, t: float, z: np.ndarray, h: float) -> tuple[np.ndarray, int]:  # pragma: no cover
+        raise NotImplementedError
