@@ -36,7 +36,7 @@ THDD = sp.Symbol("theta_ddot", real=True)
 C0 = sp.Symbol("p_psi", real=True)
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def _R(s):
     return routhian(s)
 

@@ -33,21 +33,22 @@ c1 = sp.Symbol("p_phi", real=True)  # Wells' c1 = p_φ
 c2 = sp.Symbol("p_psi", real=True)  # Wells' c2 = p_ψ
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def _R(s):
     return routhian(s)
 
 
+@functools.cache
 def _steady(s):
     """(∂R/∂θ)0 = 0 with c2 = I_x ψ̇0 sin²θ0 + c1 cosθ0 (definition of p_ψ at the steady state)."""
     cond = steady_motion_conditions(_R(s))[0].subs(theta, theta0)
-    return cond.subs(c2, Ix * w0 * sp.sin(theta0) ** 2 + c1 * sp.cos(theta0))
+    return sp.factor(sp.simplify(cond.subs(c2, Ix * w0 * sp.sin(theta0) ** 2 + c1 * sp.cos(theta0))))
 
 
 def _two_rates(s):
     """Both roots ψ̇0 of the steady condition: returned as (sum, product, count)."""
     roots = sp.solve(_steady(s), w0)
-    return [sp.simplify(roots[0] + roots[1]), sp.simplify(roots[0] * roots[1]), len(roots)]
+    return [roots[0] + roots[1], roots[0] * roots[1], len(roots)]
 
 
 def _rates(s):
@@ -62,7 +63,7 @@ def _lin_c_over_a(s):
     w2 = lin.c[0, 0] / lin.a[0, 0]
     c1_steady = sp.solve(_steady(s), c1)[0]
     w2 = w2.subs(c2, Ix * w0 * sp.sin(theta0) ** 2 + c1 * sp.cos(theta0)).subs(c1, c1_steady)
-    return sp.simplify(w2)
+    return w2
 
 
 def _phidot_coefficient(s):
@@ -98,7 +99,7 @@ PROBLEMS = [
             Quantity("exact θ equation", lambda s: _R(s).equations()[0],
                      Ix * THDD - PSIDOT**2 * Ix * sp.sin(TH) * sp.cos(TH) + PSIDOT * c1 * sp.sin(TH)
                      - M * g * r * sp.sin(TH)),
-            Quantity("steady condition / (-sinθ0)", lambda s: sp.simplify(_steady(s) / (-sp.sin(theta0))),
+            Quantity("steady condition / sinθ0", lambda s: _steady(s) / sp.sin(theta0),
                      Ix * w0**2 * sp.cos(theta0) - c1 * w0 + M * g * r),
             Quantity("two steady rates ψ̇0: sum, product, number", _two_rates,
                      [root_p + root_m, root_p * root_m, 2]),

@@ -129,13 +129,34 @@ class EquationsOfMotion(Answer):
                 done += 1
         if self.per_equation:
             derived = [to_symbols(e.lhs - e.rhs, c) for e in system.equations()]
+            state = set(_state_symbols(eqs)) | set(eqs.qdd)
             for i in range(n):
                 ratio = sp.cancel(R[i] / derived[i])
-                if ratio.free_symbols & set(_state_symbols(eqs)) | (ratio.free_symbols & set(eqs.qdd)):
+                if ratio.free_symbols & state and not _constant_ratio(R[i], derived[i], state, eqs, ranges):
                     raise Mismatch(
                         f"book equation {i + 1} is not a constant multiple of the derived "
                         f"{coordinate_name(c[i])} equation (ratio {ratio})"
                     )
+
+
+def _constant_ratio(a, b, state, eqs, ranges) -> bool:
+    """Numeric fallback when ``cancel`` cannot simplify a ratio (|x| vs sign(x)·x, trig identities): the
+    ratio a/b takes the same value at random states (30 digits) for fixed parameters."""
+    syms = sorted((a.free_symbols | b.free_symbols), key=lambda s: s.name)
+    pt0 = numeric_points(syms, 1, seed=7, ranges=ranges, parameters=eqs.parameters)[0]
+    params = {s: v for s, v in pt0.items() if s not in state}
+    values = []
+    for k in range(6):
+        pt = numeric_points([s for s in syms if s in state], 1, seed=100 + k, ranges=ranges)[0]
+        pt.update(params)
+        va, vb = a.evalf(30, subs=pt), b.evalf(30, subs=pt)
+        if vb == 0 or not (va.is_real and vb.is_real):
+            continue
+        values.append(va / vb)
+    if len(values) < 3:
+        return False
+    ref = values[0]
+    return all(abs(v - ref) <= 1e-12 * max(abs(ref), 1e-30) for v in values)
 
 
 @dataclass(frozen=True)

@@ -33,7 +33,10 @@ def _module_names() -> list[str]:
 
 
 def _module_problems(name: str) -> list[Problem]:
-    mod = importlib.import_module(f"{PACKAGE}.{name}")
+    try:
+        mod = importlib.import_module(f"{PACKAGE}.{name}")
+    except Exception as exc:  # noqa: BLE001 - a broken corpus module is reported by name, in one line
+        raise SpecError(f"corpus module {name} failed to load: {type(exc).__name__}: {exc}") from None
     probs = getattr(mod, "PROBLEMS", None) or [getattr(mod, "PROBLEM", None)]
     for p in probs:
         if not isinstance(p, Problem):

@@ -19,6 +19,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from dataclasses import dataclass
+from functools import cached_property
 
 import sympy as sp
 
@@ -73,13 +74,13 @@ class RigidBody:
         self.com = as_vector(com, f"centre of mass of rigid body {name!r}")
         self.name = name
 
-    # --- kinematics -----------------------------------------------------------------------------
-    @property
+    # --- kinematics (computed once: the body never changes) --------------------------------------
+    @cached_property
     def angular_velocity(self) -> sp.Matrix:
         """ω along the body axes (Wells 8.11 for Euler angles)."""
         return body_angular_velocity(self.orientation)
 
-    @property
+    @cached_property
     def space_angular_velocity(self) -> sp.Matrix:
         return self.R * self.angular_velocity
 

@@ -145,8 +145,12 @@ def _vee(W: sp.Matrix) -> sp.Matrix:
 
 
 def _compact(e):
-    e = sp.expand(e)
-    if sp.count_ops(e) < 400:
+    """Cheap, bounded simplification of an angular-velocity component: expand, Pythagorean cleanup,
+    and ``trigsimp`` only on small results (it is slow on long chains of rotations)."""
+    from ..derive.lagrange import _pythagoras
+
+    e = _pythagoras(e)
+    if sp.count_ops(e) < 60:
         e = sp.trigsimp(e)
     return e
 
