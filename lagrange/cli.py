@@ -10,6 +10,8 @@ import argparse
 import os
 import sys
 
+import numpy as np
+
 from . import __version__
 from .errors import LagrangeError, SpecError
 
@@ -43,6 +45,13 @@ def _cmd_problems(args) -> int:
             print(f"\nChapter {chapter}")
         dyn = "" if p.simulation is not None else "  [no dynamics]"
         print(f"  {p.id:<22} {p.title}{dyn}")
+    if args.chapter is None:
+        from .discrete.greenspan import EXAMPLES
+
+        print("\nGreenspan's tetrahedral top (simulate with --model rigid|molecular)")
+        for ex in EXAMPLES.values():
+            extra = "" if ex.masses == (1.0, 1.0, 1.0, 1.0) else f", masses {ex.masses}"
+            print(f"  greenspan-{ex.number:<12} V = {ex.V:g}, alpha = {ex.alpha_deg:g} deg{extra}")
     print(f"\n{len(probs)} problem(s)")
     return 0
 
@@ -53,7 +62,7 @@ def _cmd_derive(args) -> int:
 
     spec = load_spec(args.spec)
     system = spec.system
-    if spec.problem is not None:
+    if spec.problem is not None and hasattr(spec.problem, "title"):
         print(f"{spec.problem.id}: {spec.problem.title} ({spec.problem.source})")
     if system is None:
         print("this problem has no equations of motion (its answers are checked by `lagrange verify`)")
@@ -76,6 +85,10 @@ def _cmd_derive(args) -> int:
 def _cmd_simulate(args) -> int:
     from .spec.loader import load_spec
 
+    if args.model is not None and not args.spec.lower().startswith("greenspan-"):
+        raise SpecError("--model applies to greenspan-N only")
+    if args.model == "molecular":
+        return _greenspan_molecular(args)
     spec = load_spec(args.spec)
     if spec.system is None:
         raise SpecError(f"{args.spec}: this problem has no equations of motion to simulate")
@@ -88,12 +101,14 @@ def _cmd_simulate(args) -> int:
         raise SpecError(f"{args.spec}: no initial conditions (the problem has no dynamics to simulate)")
     options = dict(spec.options)
     options.update(method=args.method, rtol=args.rtol, atol=args.atol, backend=args.backend)
+    if args.spec.lower().startswith("greenspan-"):
+        return _greenspan_rigid(args, spec, float(t_end))
     if args.friction:
         options["friction"] = args.friction
     if not args.quiet:
         from .printing import format_equations
 
-        if spec.problem is not None:
+        if spec.problem is not None and hasattr(spec.problem, "title"):
             print(f"{spec.problem.id}: {spec.problem.title} ({spec.problem.source})")
         print(format_equations(spec.system))
         print()
@@ -111,6 +126,68 @@ def _cmd_simulate(args) -> int:
     if args.csv:
         sol.to_csv(args.csv)
         print(f"CSV written to {args.csv}")
+    return 0
+
+
+def _greenspan_report(label, t, vertices, fell, fall_time, extra: str, plot: str | None) -> None:
+    from .discrete.greenspan import summarize
+
+    sm = summarize(t, vertices, fell, fall_time)
+    print(f"{label}: t = 0 … {sm.t[-1]:.6g}, {len(sm.t)} recorded states")
+    print(f"  P1 (contact point) ends at ({sm.P1[-1, 0]:.6f}, {sm.P1[-1, 1]:.6f})")
+    print(f"  Pbar (geometric centre) ends at ({sm.Pbar[-1, 0]:.6f}, {sm.Pbar[-1, 1]:.6f}, {sm.Pbar[-1, 2]:.6f})")
+    print(f"  height of Pbar between {sm.zbar_range[0]:.6f} and {sm.zbar_range[1]:.6f}")
+    print(f"  the top falls at t = {fall_time:.6g}" if fell else "  the top does not fall")
+    print(f"  {extra}")
+    if plot:
+        import matplotlib
+
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+
+        fig, ax = plt.subplots(1, 3, figsize=(14, 4.2), constrained_layout=True)
+        ax[0].plot(sm.P1[:, 0], sm.P1[:, 1], lw=0.7)
+        ax[0].set_title("P1 in the plane")
+        ax[0].set_aspect("equal")
+        ax[1].plot(sm.Pbar[:, 0], sm.Pbar[:, 1], lw=0.7)
+        ax[1].set_title("Pbar (x, y)")
+        ax[1].set_aspect("equal")
+        ax[2].plot(sm.t, sm.Pbar[:, 2], lw=0.7)
+        ax[2].set_title("height of Pbar")
+        ax[2].set_xlabel("t")
+        fig.suptitle(label)
+        fig.savefig(plot, dpi=120)
+        print(f"plot written to {plot}")
+
+
+def _greenspan_rigid(args, spec, t_end: float) -> int:
+    from .discrete.greenspan import run_rigid
+
+    _, sol, verts = run_rigid(spec.problem, t_end, rtol=args.rtol, atol=args.atol, backend=args.backend)
+    fall = [float(e[0]) for e in sol.t_events if len(e)]
+    _greenspan_report(f"{spec.label} (rigid model, 5 DOF, {sol.method})", sol.t, verts, bool(fall),
+                      min(fall) if fall else None, f"energy error (relative): {sol.energy_error():.3e}", args.plot)
+    return 0
+
+
+def _greenspan_molecular(args) -> int:
+    import time
+
+    from .discrete.greenspan import EXAMPLES, run_molecular
+
+    try:
+        ex = EXAMPLES[int(args.spec.split("-", 1)[1])]
+    except (ValueError, KeyError):
+        raise SpecError(f"{args.spec!r}: Greenspan's examples are greenspan-1 … greenspan-14") from None
+    t_end = args.t_end if args.t_end is not None else 110.0
+    t0 = time.perf_counter()
+    model, res = run_molecular(ex, t_end)
+    wall = time.perf_counter() - t0
+    E = model.energy(res.x, res.v)
+    _greenspan_report(f"greenspan-{ex.number} (molecular model, discrete gradient, dt = 1e-5)", res.t, res.x,
+                      res.fell, res.fall_time,
+                      f"{res.steps} steps in {wall:.1f} s; relative energy drift {np.ptp(E) / abs(E[0]):.2e}",
+                      args.plot)
     return 0
 
 
@@ -215,6 +292,7 @@ def _parser() -> argparse.ArgumentParser:
     p.add_argument("--param", action="append", metavar="NAME=VALUE", help="override a parameter value")
     p.add_argument("--initial", action="append", metavar="NAME=VALUE", help="override an initial value (x, x_dot)")
     p.add_argument("-q", "--quiet", action="store_true", help="do not print the equations first")
+    p.add_argument("--model", choices=["rigid", "molecular"], help="greenspan-N only: the model to run")
     p.set_defaults(func=_cmd_simulate)
 
     p = sub.add_parser("modes", help="linearize about an equilibrium: matrices, frequencies, mode shapes")

@@ -154,6 +154,21 @@ def load_spec(spec: str) -> LoadedSpec:
         if not path.is_file():
             raise SpecError(f"spec file {spec!r} does not exist")
         return load_toml(path) if path.suffix.lower() == ".toml" else _load_python(path)
+    if spec.lower().startswith("greenspan-"):
+        return _greenspan(spec)
     from ..corpus.registry import get_problem
 
     return _from_problem(get_problem(spec))
+
+
+def _greenspan(spec: str) -> LoadedSpec:
+    """``greenspan-N``: the rigid model of Greenspan's example N (the molecular model: ``--model``)."""
+    from ..discrete import greenspan as gs
+
+    try:
+        ex = gs.EXAMPLES[int(spec.split("-", 1)[1])]
+    except (ValueError, KeyError):
+        raise SpecError(f"{spec!r}: Greenspan's examples are greenspan-1 … greenspan-14") from None
+    system, coords = gs.rigid_system(ex.masses)
+    return LoadedSpec(system, {"g": gs.G}, gs.rigid_initial(ex, coords), 110.0, {}, f"greenspan-{ex.number}",
+                      problem=ex)

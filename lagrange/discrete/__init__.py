@@ -1,0 +1,1 @@
+"""Discrete (molecular) models: the energy-conserving pair-potential integrator and Greenspan's top."""

@@ -1,0 +1,206 @@
+r"""Greenspan's discrete tetrahedral top on a smooth plane — the molecular model and the rigid model.
+
+Scene (D. Greenspan, "Conservative motion of a discrete, tetrahedral top on a smooth horizontal plane",
+Q. Appl. Math., 1996): four particles P1..P4 at the vertices of a regular tetrahedron of edge
+``R = √(5/3)`` (where the pair force vanishes), tip P1 on the plane z = 0, gravity on P2..P4 only
+(g = 0.980), spin V of P2..P4 about the axis through P1 and the centre of P2P3P4, tilt α in the XZ plane.
+
+* **Molecular model** (the paper's): 12 Cartesian coordinates (P1's z held at 0), the pair potential
+  ``φ(r) = A(−1/r³ + 1/r⁵)``, A = 10⁶, integrated with the exactly energy-conserving discrete gradient
+  (:mod:`lagrange.discrete.pair_dg`), dt = 1e-5.
+* **Rigid model** (what the scene needs): 5 degrees of freedom — the tip (X, Y) on the plane and Wells'
+  Euler angles (ψ, θ, φ) — declared with the public API (four :class:`~lagrange.Particle` at points of a
+  :class:`~lagrange.RigidBody` frame), integrated by an adaptive method.
+
+The run stops when any of z2, z3, z4 reaches 0 (the top has fallen). Pbar is the geometric centre (the
+mean of the four vertices).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass
+
+import numpy as np
+import sympy as sp
+
+from ..conventions import t
+from ..model.bodies import Particle
+from ..model.coordinates import coordinates, parameters
+from ..model.rotations import EulerAngles
+from ..model.system import System
+from .pair_dg import PairSystem
+
+__all__ = ["EXAMPLES", "Example", "initial_vertices", "molecular_model", "run_molecular", "rigid_system",
+           "rigid_initial", "run_rigid", "Summary", "summarize", "compare_models", "EDGE", "A_PAIR", "G"]
+
+EDGE = float(np.sqrt(5.0 / 3.0))
+A_PAIR = 1.0e6
+G = 0.980
+
+
+@dataclass(frozen=True)
+class Example:
+    number: int
+    V: float
+    alpha_deg: float
+    masses: tuple = (1.0, 1.0, 1.0, 1.0)
+
+
+def _m(**kw):
+    m = [1.0, 1.0, 1.0, 1.0]
+    for k, v in kw.items():
+        m[int(k[1]) - 1] = v
+    return tuple(m)
+
+
+#: The paper's 14 examples.
+EXAMPLES = {
+    1: Example(1, 4, 15), 2: Example(2, 8, 15), 3: Example(3, 16, 15),
+    4: Example(4, 4, 30), 5: Example(5, 8, 30), 6: Example(6, 16, 30),
+    7: Example(7, 4, 45), 8: Example(8, 8, 45), 9: Example(9, 16, 45),
+    10: Example(10, 1, 15),
+    11: Example(11, 4, 15, _m(m2=0.995)),
+    12: Example(12, 4, 30, _m(m2=1.005)),
+    13: Example(13, 8, 30, _m(m2=1.005, m3=0.95)),
+    14: Example(14, 4, 45, _m(m2=0.995, m3=0.985)),
+}
+
+
+def _tilt(alpha: float) -> np.ndarray:
+    c, s = np.cos(alpha), np.sin(alpha)
+    return np.array([[c, 0.0, s], [0.0, 1.0, 0.0], [-s, 0.0, c]])
+
+
+def _body_vertices(R: float = EDGE) -> np.ndarray:
+    s3, s6 = np.sqrt(3.0), np.sqrt(6.0)
+    return np.array([[0, 0, 0], [0, R * s3 / 3, R * s6 / 3], [R / 2, -R * s3 / 6, R * s6 / 3],
+                     [-R / 2, -R * s3 / 6, R * s6 / 3]], dtype=float)
+
+
+def initial_vertices(ex: Example) -> tuple[np.ndarray, np.ndarray]:
+    """Positions and velocities (4, 3) of the paper's initial state: spin V, tilt α in the XZ plane."""
+    s3 = np.sqrt(3.0)
+    V = ex.V
+    v = np.array([[0, 0, 0], [V, 0, 0], [-V / 2, -V * s3 / 2, 0], [-V / 2, V * s3 / 2, 0]], dtype=float)
+    Rt = _tilt(np.radians(ex.alpha_deg))
+    return _body_vertices() @ Rt.T, v @ Rt.T
+
+
+def molecular_model(masses=(1.0, 1.0, 1.0, 1.0), A: float = A_PAIR, g: float = G) -> PairSystem:
+    r = sp.Symbol("r", positive=True)
+    return PairSystem(masses, A * (-1 / r**3 + 1 / r**5), r, weights=[0.0, g, g, g], fixed=[(0, 2)])
+
+
+def run_molecular(ex: Example, t_end: float = 110.0, *, dt: float = 1e-5, record_every: int = 5000):
+    """The paper's run: returns (model, DGResult)."""
+    model = molecular_model(ex.masses)
+    x0, v0 = initial_vertices(ex)
+    steps = int(round(t_end / dt))
+    return model, model.integrate(x0, v0, dt=dt, steps=steps, record_every=record_every, fall_particles=[1, 2, 3])
+
+
+def rigid_system(masses=(1.0, 1.0, 1.0, 1.0)) -> tuple[System, tuple]:
+    """The 5-DOF rigid top: tip (X, Y) on the plane, Euler angles (ψ, θ, φ) of the body frame whose axes
+    are the untilted lab axes; returns (system, coordinates)."""
+    X, Y, psi, th, ph = coordinates("X Y psi theta phi")
+    g = parameters("g")
+    R = EulerAngles(psi, th, ph).matrix
+    tip = sp.Matrix([X, Y, 0])
+    s3, s6 = sp.sqrt(3), sp.sqrt(6)
+    e = sp.sqrt(sp.Rational(5, 3))
+    body = [sp.Matrix([0, 0, 0]), sp.Matrix([0, e * s3 / 3, e * s6 / 3]), sp.Matrix([e / 2, -e * s3 / 6, e * s6 / 3]),
+            sp.Matrix([-e / 2, -e * s3 / 6, e * s6 / 3])]
+    ms = [sp.nsimplify(mi) for mi in masses]
+    parts = [Particle(ms[i], tip + R * body[i], name=f"P{i + 1}") for i in range(4)]
+    V = sum((ms[i] * g * parts[i].position[2] for i in range(1, 4)), sp.S.Zero)
+    return System([X, Y, psi, th, ph], bodies=parts, V=V, name="Greenspan's top (rigid)"), (X, Y, psi, th, ph)
+
+
+def _euler_from_matrix(Rm: np.ndarray) -> tuple[float, float, float]:
+    """Wells' (ψ, θ, φ) of R = Rz(ψ)Rx(θ)Rz(φ) (0 < θ < π)."""
+    th = float(np.arccos(np.clip(Rm[2, 2], -1, 1)))
+    psi = float(np.arctan2(Rm[0, 2], -Rm[1, 2]))
+    ph = float(np.arctan2(Rm[2, 0], Rm[2, 1]))
+    return psi, th, ph
+
+
+def rigid_initial(ex: Example, coords) -> dict:
+    """Initial state of the rigid model equivalent to the paper's: orientation = the tilt, angular velocity
+    = spin about the body axis P1→centre of P2P3P4, tip at rest."""
+    X, Y, psi, th, ph = coords
+    a, b, c = _euler_from_matrix(_tilt(np.radians(ex.alpha_deg)))
+    spin = -ex.V * np.sqrt(3.0) / EDGE  # body z component (v2 = (V, 0, 0) at P2 = (0, R/√3, h))
+    # body ω = (0, 0, spin): Wells 8.11 gives ψ̇ = θ̇ = 0, φ̇ = spin
+    return {X: 0.0, Y: 0.0, psi: a, th: b, ph: c, X.diff(t): 0.0, Y.diff(t): 0.0, psi.diff(t): 0.0,
+            th.diff(t): 0.0, ph.diff(t): spin}
+
+
+def _vertex_function(system: System):
+    pos = [p.position for p in system.bodies]
+    from ..model.coordinates import to_symbols
+
+    exprs = [to_symbols(P, system.coordinates) for P in pos]
+    syms = [to_symbols(q, system.coordinates) for q in system.coordinates]
+    f = sp.lambdify([syms], [list(e) for e in exprs], "numpy")
+    return lambda q: np.array(f(list(q)), dtype=float)
+
+
+def run_rigid(ex: Example, t_end: float = 110.0, *, t_eval=None, rtol: float = 1e-10, atol: float = 1e-12,
+              backend: str = "python"):
+    """The rigid model over ``t_end`` with a terminal event when a weighted vertex reaches z = 0.
+
+    Returns (system, trajectory, vertices) with vertices (k, 4, 3) at the output times."""
+    system, coords = rigid_system(ex.masses)
+    verts = _vertex_function(system)
+    n = len(coords)
+    events = []
+    for i in (1, 2, 3):
+        def ev(t_, y, i=i):
+            return float(verts(y[:n])[i, 2])
+
+        ev.terminal = True
+        ev.direction = -1
+        events.append(ev)
+    if t_eval is None:
+        t_eval = np.linspace(0.0, t_end, 2201)
+    sol = system.simulate(t_end, rigid_initial(ex, coords), {"g": G}, t_eval=t_eval, events=events, rtol=rtol,
+                          atol=atol, backend=backend)
+    V = np.array([verts(y[:n]) for y in sol.y])
+    return system, sol, V
+
+
+@dataclass(frozen=True)
+class Summary:
+    t: np.ndarray
+    P1: np.ndarray  # (k, 2) path of the contact point in the plane
+    Pbar: np.ndarray  # (k, 3) path of the geometric centre
+    zbar_range: tuple
+    fell: bool
+    fall_time: float | None
+
+
+def summarize(t, vertices, fell: bool, fall_time: float | None) -> Summary:
+    P1 = vertices[:, 0, :2]
+    Pbar = vertices.mean(axis=1)
+    return Summary(np.asarray(t), P1, Pbar, (float(Pbar[:, 2].min()), float(Pbar[:, 2].max())), fell, fall_time)
+
+
+def compare_models(ex: Example, t_end: float, *, dt: float = 1e-5, record_every: int = 5000) -> Mapping:
+    """Run both models and report the largest differences of P1 and Pbar over the common output times."""
+    model, mol = run_molecular(ex, t_end, dt=dt, record_every=record_every)
+    ms = summarize(mol.t, mol.x, mol.fell, mol.fall_time)
+    _, sol, Vr = run_rigid(ex, float(mol.t[-1]), t_eval=mol.t)
+    rs = summarize(sol.t, Vr, bool(sol.t_events and any(len(e) for e in sol.t_events)),
+                   next((float(e[0]) for e in sol.t_events if len(e)), None))
+    k = min(len(ms.t), len(rs.t))
+    E = model.energy(mol.x, mol.v)
+    return {
+        "example": ex.number,
+        "molecular": ms,
+        "rigid": rs,
+        "max_P1_difference": float(np.max(np.linalg.norm(ms.P1[:k] - rs.P1[:k], axis=1))),
+        "max_Pbar_difference": float(np.max(np.linalg.norm(ms.Pbar[:k] - rs.Pbar[:k], axis=1))),
+        "molecular_energy_drift": float(np.ptp(E) / abs(E[0])),
+        "rigid_energy_error": float(sol.energy_error()),
+    }
