@@ -158,7 +158,8 @@ def test_top_steady_precession_two_rates_and_stability():
                          rtol=1e-11, atol=1e-12)
         assert np.ptp(sol[th]) < 1e-7  # steady: θ stays put
     cond = steady_motion_conditions(R)[0]
-    p_phi, p_psi = R.momenta
+    momenta = {p.name: p for p in R.momenta}
+    p_phi, p_psi = momenta["p_phi"], momenta["p_psi"]
     w = float(roots[0])
     pphi = 0.02 * n
     ppsi = 0.05 * w * np.sin(th0) ** 2 + pphi * np.cos(th0)

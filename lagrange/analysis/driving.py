@@ -81,8 +81,12 @@ def static_equilibrium(system, unknowns: Sequence, params: Mapping | None = None
     sub = {s: by_name[s.name] for c in conds for s in c.free_symbols if s.name in by_name and s not in unk}
     f = sp.lambdify([unk], [c.subs(sub) for c in conds], "numpy")
     x0 = np.array([float((guess or {}).get(u, 0.0)) for u in unknowns])
-    res = scipy.optimize.root(lambda x: np.asarray(f(x), dtype=float)[: len(unk)] if len(conds) > len(unk)
-                              else np.asarray(f(x), dtype=float), x0, tol=1e-13)
-    if not res.success:
-        raise LagrangeError(f"static equilibrium not found: {res.message}")
+    def F(x):
+        v = np.asarray(f(x), dtype=float)
+        return v[: len(unk)] if len(conds) > len(unk) else v
+
+    res = scipy.optimize.root(F, x0, tol=1e-12)
+    scale = max(1.0, float(np.max(np.abs(F(x0)))))
+    if not (res.success or float(np.max(np.abs(F(res.x)))) <= 1e-10 * scale):
+        raise LagrangeError(f"static equilibrium not found from {dict(zip(map(str, unknowns), x0))}: {res.message}")
     return dict(zip(unknowns, (float(v) for v in res.x)))

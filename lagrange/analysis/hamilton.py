@@ -50,14 +50,14 @@ class HamiltonianForm:
 
     def energy_rate(self) -> sp.Expr:
         """``dH/dt`` along the canonical flow, computed from the equations: Σ ∂H/∂q q̇ + ∂H/∂p ṗ + ∂H/∂t."""
-        return sp.expand(sum((sp.diff(self.H, q) * qd for q, qd in zip(self.q, self.qdot)), sp.S.Zero)
-                         + sum((sp.diff(self.H, p) * pd for p, pd in zip(self.p, self.pdot)), sp.S.Zero)
-                         + sp.diff(self.H, t))
+        return (sum((sp.diff(self.H, q) * qd for q, qd in zip(self.q, self.qdot)), sp.S.Zero)
+                + sum((sp.diff(self.H, p) * pd for p, pd in zip(self.p, self.pdot)), sp.S.Zero)
+                + sp.diff(self.H, t))
 
     def expected_energy_rate(self) -> sp.Expr:
         """Wells (16.11): ``Σ Q_r q̇_r + ∂H/∂t`` — must equal :meth:`energy_rate`."""
         power = sum((Q * qd for Q, qd in zip(self.nonconservative, self.qdot)), sp.S.Zero)
-        return sp.expand(power + sp.diff(self.H, t))
+        return power + sp.diff(self.H, t)
 
     def H_functions(self) -> sp.Expr:
         """H with q as coordinate functions (for printing next to the equations)."""
@@ -75,12 +75,14 @@ def hamiltonian(system) -> HamiltonianForm:
     momenta = [sp.diff(L, v) for v in qd]
     M = sp.Matrix(eqs.mass_matrix)
     B = sp.Matrix([m.subs({v: 0 for v in qd}) for m in momenta])
-    vel = M.LUsolve(sp.Matrix(p) - B) if len(q) <= 3 else M.inv(method="LU") * (sp.Matrix(p) - B)
-    vel = [sp.simplify(v) if sp.count_ops(v) < 300 else v for v in vel]
+    if M.is_diagonal():
+        vel = [(pi - bi) / M[i, i] for i, (pi, bi) in enumerate(zip(p, B))]
+    else:
+        vel = list(M.LUsolve(sp.Matrix(p) - B))  # no symbolic inverse: it explodes beyond 3 coordinates
+    vel = [sp.simplify(v) if sp.count_ops(v) < 120 else sp.cancel(v) for v in vel]
     to_p = dict(zip(qd, vel))
-    H = sp.expand(sum((pi * vi for pi, vi in zip(p, vel)), sp.S.Zero) - L.subs(to_p))
-    if sp.count_ops(H) < 400:
-        H = sp.simplify(H)
+    H = sum((pi * vi for pi, vi in zip(p, vel)), sp.S.Zero) - L.subs(to_p)
+    H = sp.simplify(H) if sp.count_ops(H) < 250 else sp.cancel(sp.together(H))
     Q = [sp.sympify(e).subs(to_p) for e in eqs.nonconservative]
     qdot = tuple(sp.diff(H, pi) for pi in p)
     pdot = tuple(-sp.diff(H, qi) + Qi for qi, Qi in zip(q, Q))

@@ -71,8 +71,9 @@ def equilibria(system, params: Mapping | None = None, guess: Mapping | None = No
     if guess:
         start = _state_map(system, guess)
         x0 = np.array([float(start.get(s, 0.0)) for s in eqs.q])
-    res = scipy.optimize.root(lambda x: np.asarray(f(x), dtype=float), x0, tol=1e-13)
-    if not res.success:
+    res = scipy.optimize.root(lambda x: np.asarray(f(x), dtype=float), x0, tol=1e-12)
+    scale = max(1.0, float(np.max(np.abs(np.asarray(f(x0), dtype=float)))))
+    if not (res.success or float(np.max(np.abs(np.asarray(f(res.x), dtype=float)))) <= 1e-10 * scale):
         raise LagrangeError(f"no equilibrium found from {dict(zip(map(str, eqs.q), x0))}: {res.message}")
     return {c: float(v) for c, v in zip(system.coordinates, res.x)}
 

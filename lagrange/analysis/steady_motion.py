@@ -59,6 +59,12 @@ class Routhian:
         return out
 
 
+def _bounded_simplify(e, limit: int = 120):
+    """``simplify`` on small expressions only (it can take tens of seconds on a Routhian with several
+    ignorable coordinates); larger ones are only put over a common denominator."""
+    return sp.simplify(e) if sp.count_ops(e) <= limit else sp.factor_terms(sp.cancel(sp.together(e)))
+
+
 def routhian(system, ignorable=None) -> Routhian:
     """The Routhian for ``ignorable`` coordinates (default: all detected ignorable ones)."""
     eqs = system.derived
@@ -72,9 +78,9 @@ def routhian(system, ignorable=None) -> Routhian:
     sol = sp.solve([sp.diff(L, v) - pi for v, pi in zip(Jd, p)], Jd, dict=True)
     if len(sol) != 1:
         raise ValueError("the ignorable velocities cannot be solved uniquely from their momenta")
-    rates = tuple(sp.simplify(sol[0][v]) for v in Jd)
+    rates = tuple(_bounded_simplify(sol[0][v]) for v in Jd)
     R = L - sum((pi * v for pi, v in zip(p, Jd)), sp.S.Zero)
-    R = sp.simplify(R.subs(sol[0]))
+    R = _bounded_simplify(R.subs(sol[0]))
     return Routhian(system, ignorable, kept, tuple(p), R, rates)
 
 

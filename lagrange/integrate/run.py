@@ -215,7 +215,7 @@ def _check_initial_mass_matrix(system, model: NumericModel, t0: float, y0) -> No
     try:
         model.fun(t0, y0)
     except SingularMassMatrixError as exc:
-        raise SingularMassMatrixError(str(exc) + _gimbal_hint(system)) from None
+        raise SingularMassMatrixError(str(exc).rstrip(".") + "." + _gimbal_hint(system)) from None
     hint = _gimbal_hint(system)
     if hint and not model.m:
         M, _ = model.mass_and_forcing(t0, y0)
