@@ -126,6 +126,11 @@ def _cmd_simulate(args) -> int:
     if args.csv:
         sol.to_csv(args.csv)
         print(f"CSV written to {args.csv}")
+    if args.animate:
+        from .plot import animate
+
+        animate(spec.system, sol, args.animate, title=spec.label)
+        print(f"animation written to {args.animate}")
     return 0
 
 
@@ -284,6 +289,7 @@ def _parser() -> argparse.ArgumentParser:
     p.add_argument("--t-end", type=float, help="end time (default: the spec's)")
     p.add_argument("--plot", help="write a PNG plot to this path")
     p.add_argument("--csv", help="write the trajectory to this CSV path")
+    p.add_argument("--animate", help="write an animation (.gif, or .mp4 with ffmpeg) to this path")
     p.add_argument("--method", default="DOP853", help="DOP853 (default), RK45, RK23, LSODA, Radau, BDF or auto")
     p.add_argument("--rtol", type=float, default=1e-9)
     p.add_argument("--atol", type=float, default=1e-11)
