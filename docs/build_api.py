@@ -53,6 +53,9 @@ EXTRA_MODULES = {
 
 MISSING = "*(no docstring)*"
 
+#: Special methods that are part of how a class is used (``sol[theta]``), documented with the rest.
+DUNDERS = {"__getitem__", "__call__"}
+
 
 class _Raw:
     """An annotation shown exactly as written (annotations are strings under ``from __future__``)."""
@@ -158,7 +161,7 @@ class Builder:
 
     def members(self, qualname: str, cls, level: int) -> None:
         for name, member in vars(cls).items():
-            if name.startswith("_"):
+            if name.startswith("_") and name not in DUNDERS:
                 continue
             is_prop = isinstance(member, property) or type(member).__name__ == "cached_property"
             is_method = inspect.isfunction(member) or isinstance(member, (staticmethod, classmethod))

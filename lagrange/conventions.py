@@ -38,7 +38,13 @@ Symbols
 * The symbolic layer is exact (``Rational(1, 2)``, never ``0.5``); floats enter only at code generation.
 * Angles are in radians. The engine is unit-agnostic: each problem states its units.
 
-Multipliers (constraints, later issues) use ``+ (∂Φ/∂q)ᵀ λ`` on the right-hand side.
+Multipliers: with constraints ``g = A q̇ + b = 0`` (``A = ∂φ/∂q`` for a holonomic ``φ(q, t) = 0``) the
+equations read ``M q̈ = f + Aᵀλ``; ``λ_k A_kr`` is the generalized force of constraint on coordinate r
+(Wells' 𝓕_qr, eq. 12.3). Details and examples: :mod:`lagrange.model.constraints`.
+
+Euler angles and rotations: :mod:`lagrange.model.rotations` (Wells' z-x-z ψ, θ, φ; rotation matrices
+map body to inertial components). Products of inertia are Wells' positive sums:
+:mod:`lagrange.model.inertia`.
 """
 
 from __future__ import annotations

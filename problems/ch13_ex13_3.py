@@ -3,7 +3,7 @@ spring k: driving forces f (on the cart) and f_q (on m along the incline) for a 
 
 import sympy as sp
 
-from lagrange import System, coordinates, driving_forces, parameters, t
+from lagrange import System, coordinates, parameters, t
 from lagrange.corpus import EquationsOfMotion, KineticEnergy, Problem, Quantity, Simulation
 
 x, q = coordinates("x q")
@@ -20,8 +20,9 @@ qm = q0 + B * sp.sin(w2 * t + d2)
 
 
 def _forces(s):
-    f = driving_forces(s, {x: xm, q: qm})
-    return [f[x], f[q]]
+    """Wells (13.1): substitute the prescribed motion into the derived equations (lhs − rhs = F'_q)."""
+    sub = {x.diff(t, 2): xm.diff(t, 2), q.diff(t, 2): qm.diff(t, 2), x.diff(t): xm.diff(t), q.diff(t): qm.diff(t)}
+    return [(e.lhs - e.rhs).subs(sub).subs({x: xm, q: qm}) for e in s.equations()]
 
 
 # Book: f = −ω1²(M1+4M+4I/r²+m) x + m ω2² q cosθ, f_q = m(ω1² x cosθ − ω2² q) + k(q − q0) − mg sinθ,

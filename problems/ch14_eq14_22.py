@@ -1,8 +1,7 @@
 """Wells, eq. (14.22) — particle relative to a railroad car on a straight track at angle beta in the X1Y1
 plane of the earth frame (Fig. 14-2); the car is at distance S(t) along the track; frame X along the track.
 
-x1 = (S + x) cos(beta) - y sin(beta), y1 = (S + x) sin(beta) + y cos(beta), z1 = z. S is kept as a coordinate
-(its motion may be prescribed later).
+x1 = (S + x) cos(beta) - y sin(beta), y1 = (S + x) sin(beta) + y cos(beta), z1 = z.
 """
 
 import sympy as sp
@@ -12,13 +11,14 @@ from lagrange.corpus import KineticEnergy, Problem, Simulation
 from lagrange.model.frames import EarthFrame
 
 S, x, y, z = coordinates("S x y z")
-m, w, R, Phi, beta = parameters("m omega_e R Phi beta")
+m, w, R, Phi, beta, a = parameters("m omega_e R Phi beta a")
 sb, cb, sF, cF = sp.sin(beta), sp.cos(beta), sp.sin(Phi), sp.cos(Phi)
 Sd, xd, yd, zd = (q.diff(t) for q in (S, x, y, z))
 E = EarthFrame(Phi, w, R)
 X1 = S * cb + x * cb - y * sb
 Y1 = S * sb + x * sb + y * cb
-system = System([S, x, y, z], bodies=[Particle(m, E.point((X1, Y1, z)), name="particle")],
+S_t = a * t**2 / 2  # the car's motion S(t), prescribed (uniform acceleration a)
+system = System([x, y, z], bodies=[Particle(m, E.point((X1, Y1, z)), name="particle")], prescribed={S: S_t},
                 name="particle in a car on a track on the rotating earth")
 
 half = sp.Rational(1, 2)
@@ -33,8 +33,8 @@ PROBLEM = Problem(
     chapter=14,
     source="Wells, eq. (14.22)",
     system=system,
-    answers=[KineticEnergy(T_book)],
-    simulation=Simulation(params={m: 1.0, w: 7.29211e-5, R: 6.378e6, Phi: 0.7, beta: 0.4},
-                          initial={S: 0.0, x: 0.0, y: 0.0, z: 0.0, Sd: 10.0, xd: 0.0, yd: 1.0, zd: 0.0}, t_end=2.0),
+    answers=[KineticEnergy(T_book.subs(Sd, S_t.diff(t)).subs(S, S_t))],
+    simulation=Simulation(params={m: 1.0, w: 7.29211e-5, R: 6.378e6, Phi: 0.7, beta: 0.4, a: 1.0},
+                          initial={x: 0.0, y: 0.0, z: 0.0, xd: 0.0, yd: 1.0, zd: 0.0}, t_end=2.0),
     units="SI in the simulation",
 )

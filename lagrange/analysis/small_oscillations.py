@@ -161,6 +161,7 @@ class Modes:
 
     @property
     def periods(self) -> np.ndarray:
+        """2π/ω (infinite for zero modes)."""
         with np.errstate(divide="ignore"):
             return np.where(self.omega > 0, 2 * np.pi / np.where(self.omega > 0, self.omega, 1), np.inf)
 

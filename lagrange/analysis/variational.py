@@ -54,6 +54,8 @@ def action(trajectory) -> float:
 
 @dataclass(frozen=True)
 class VariationalResult:
+    """Fixed-step results: times, positions and discrete momenta (steps+1, n), Newton iterations per step."""
+
     t: np.ndarray
     q: np.ndarray  # (steps+1, n)
     p: np.ndarray  # (steps+1, n) discrete momenta

@@ -23,6 +23,8 @@ class Simulation:
 
 @dataclass(frozen=True)
 class CheckResult:
+    """The outcome of checking one answer of one problem (``detail`` says what disagreed)."""
+
     problem: str
     answer: str
     ok: bool

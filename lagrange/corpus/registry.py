@@ -57,6 +57,7 @@ def all_problems() -> tuple[Problem, ...]:
 
 
 def problem_ids() -> list[str]:
+    """Every problem id, in corpus order."""
     return [p.id for p in all_problems()]
 
 

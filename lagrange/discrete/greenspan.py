@@ -9,8 +9,8 @@ Q. Appl. Math., 1996): four particles P1..P4 at the vertices of a regular tetrah
   ``φ(r) = A(−1/r³ + 1/r⁵)``, A = 10⁶, integrated with the exactly energy-conserving discrete gradient
   (:mod:`lagrange.discrete.pair_dg`), dt = 1e-5.
 * **Rigid model** (what the scene needs): 5 degrees of freedom — the tip (X, Y) on the plane and Wells'
-  Euler angles (ψ, θ, φ) — declared with the public API (four :class:`~lagrange.Particle` at points of a
-  :class:`~lagrange.RigidBody` frame), integrated by an adaptive method.
+  Euler angles (ψ, θ, φ) — declared with the public API (four :class:`~lagrange.Particle` placed with
+  the :class:`~lagrange.EulerAngles` rotation of the body frame), integrated by an adaptive method.
 
 The run stops when any of z2, z3, z4 reaches 0 (the top has fallen). Pbar is the geometric centre (the
 mean of the four vertices).
@@ -41,6 +41,8 @@ G = 0.980
 
 @dataclass(frozen=True)
 class Example:
+    """One of the paper's examples: spin speed V, tilt α (degrees), the four masses."""
+
     number: int
     V: float
     alpha_deg: float
@@ -88,6 +90,7 @@ def initial_vertices(ex: Example) -> tuple[np.ndarray, np.ndarray]:
 
 
 def molecular_model(masses=(1.0, 1.0, 1.0, 1.0), A: float = A_PAIR, g: float = G) -> PairSystem:
+    """The paper's molecular top: φ(r) = A(−1/r³ + 1/r⁵), weights on P2..P4, P1's z held at 0."""
     r = sp.Symbol("r", positive=True)
     return PairSystem(masses, A * (-1 / r**3 + 1 / r**5), r, weights=[0.0, g, g, g], fixed=[(0, 2)])
 
@@ -172,6 +175,8 @@ def run_rigid(ex: Example, t_end: float = 110.0, *, t_eval=None, rtol: float = 1
 
 @dataclass(frozen=True)
 class Summary:
+    """What the paper reports of a run: the path of P1 in the plane, of Pbar, Pbar's height range, the fall."""
+
     t: np.ndarray
     P1: np.ndarray  # (k, 2) path of the contact point in the plane
     Pbar: np.ndarray  # (k, 3) path of the geometric centre
@@ -181,6 +186,7 @@ class Summary:
 
 
 def summarize(t, vertices, fell: bool, fall_time: float | None) -> Summary:
+    """Summary of vertex positions (k, 4, 3) at times t."""
     P1 = vertices[:, 0, :2]
     Pbar = vertices.mean(axis=1)
     return Summary(np.asarray(t), P1, Pbar, (float(Pbar[:, 2].min()), float(Pbar[:, 2].max())), fell, fall_time)

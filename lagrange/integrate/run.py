@@ -258,10 +258,13 @@ def simulate(
     method : one of ``DOP853`` (default), ``RK45``, ``RK23``, ``LSODA``, ``Radau``, ``BDF`` or ``auto``
         (the implicit ones get the generated Jacobian), or a fixed-step geometric integrator for
         conservative unconstrained systems — ``midpoint``, ``gl4``, ``gl6`` (Gauss–Legendre, symplectic),
-        ``verlet`` (Störmer–Verlet, separable T) or ``dg`` (discrete gradient, energy-conserving) — with
-        ``step=h``; see :mod:`lagrange.integrate.base`.
+        ``verlet`` (Störmer–Verlet, needs a constant mass matrix and V(q)) or ``dg`` (discrete gradient,
+        energy conserved to the Newton tolerance) — with ``step=h``; see :mod:`lagrange.integrate.fixed`.
     rtol, atol : tolerances passed to scipy
-    t_eval : output times; default ``n_points`` equally spaced times
+    t_eval : output times; default ``n_points`` equally spaced times (fixed-step methods record about
+        ``n_points`` states instead)
+    max_step : largest step of the adaptive scipy methods
+    step : the step of the fixed-step geometric methods
     events : scipy-style event callables ``event(t, y)`` (``terminal``/``direction`` attributes honoured)
     backend : ``python`` (default), ``numba``, ``reference`` or ``auto``; see :mod:`lagrange.codegen.numeric`
     model : a NumericModel from :meth:`System.compile` to reuse (skips code generation)

@@ -1,8 +1,8 @@
 r"""Bodies that carry kinetic energy, and applied forces.
 
 A body is anything with ``kinetic_energy()`` returning T in the coordinate functions and ``t``,
-``name`` and ``position_vectors()`` (the points drawn by plots and used by cross-checks). Particles
-live here; rigid bodies join them later through the same protocol.
+``name``, ``position_vectors()`` (the points drawn by animations) and ``subs(mapping)``. Particles live
+here; :class:`~lagrange.model.rigid_body.RigidBody` follows the same protocol.
 
 Positions are Wells' *transformation equations* :math:`x_i = x_i(q_1..q_n, t)`: explicit ``t`` covers
 moving frames, moving constraints and prescribed motions. T is always reckoned from velocities
@@ -83,10 +83,12 @@ class Particle:
         return self.position.diff(t)
 
     def kinetic_energy(self) -> sp.Expr:
+        """½ m v·v with the inertial velocity."""
         v = self.velocity
         return sp.Rational(1, 2) * self.mass * (v.T * v)[0, 0]
 
     def position_vectors(self) -> tuple[sp.Matrix, ...]:
+        """The points to draw: the particle's position."""
         return (self.position,)
 
     def subs(self, mapping) -> Particle:

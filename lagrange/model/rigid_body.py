@@ -82,6 +82,7 @@ class RigidBody:
 
     @cached_property
     def space_angular_velocity(self) -> sp.Matrix:
+        """ω along the inertial axes (``R ω_body``)."""
         return self.R * self.angular_velocity
 
     def point(self, r_body) -> sp.Matrix:
@@ -90,6 +91,7 @@ class RigidBody:
 
     @property
     def centre_of_mass(self) -> sp.Matrix:
+        """Inertial position of the centre of mass."""
         return self.point(self.com)
 
     # --- energy ---------------------------------------------------------------------------------
@@ -108,9 +110,12 @@ class RigidBody:
         return self.orientation.constraints() if isinstance(self.orientation, (EulerAngles, Quaternion)) else ()
 
     def position_vectors(self) -> tuple[sp.Matrix, ...]:
+        """The body origin and the centre of mass (inertial positions)."""
         return (self.origin, self.centre_of_mass)
 
     def subs(self, mapping) -> RigidBody:
+        """The body with ``mapping`` substituted (used by :func:`lagrange.eliminate`)."""
+
         def s(x):
             return sp.sympify(x).subs(mapping).doit()
 
@@ -149,4 +154,5 @@ class Torque:
         object.__setattr__(self, "frame", frame)
 
     def angular_velocity(self) -> sp.Matrix:
+        """ω in the torque's frame (what ``τ·∂ω/∂q̇`` needs)."""
         return self.body.angular_velocity if self.frame == "body" else self.body.space_angular_velocity

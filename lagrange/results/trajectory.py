@@ -64,6 +64,7 @@ class Trajectory:
 
     @property
     def coordinates(self) -> tuple:
+        """The coordinate functions, in state order."""
         return self.model.equations.coordinates
 
     @property
@@ -164,10 +165,12 @@ class Trajectory:
 
     @property
     def energy(self) -> np.ndarray:
+        """T + V at every output time."""
         return self.diagnostics["energy"]
 
     @property
     def jacobi(self) -> np.ndarray:
+        """The Jacobi integral h = Σ q̇ ∂L/∂q̇ − L at every output time."""
         return self.diagnostics["jacobi"]
 
     def power_balance(self) -> np.ndarray:
