@@ -8,7 +8,6 @@ import sympy as sp
 from lagrange import (
     System,
     coordinates,
-    oscillations_about_steady_motion,
     parameters,
     routhian,
     steady_motion_conditions,
@@ -46,8 +45,10 @@ def _steady(s):
 
 
 def _lin(s):
-    m = oscillations_about_steady_motion(_R(s), {theta: theta0})
-    return [m.a[0, 0], m.c[0, 0]]
+    """a = ∂²R/∂θ̇², c = −∂²R/∂θ² at θ = θ0 (Wells 11.11; same as oscillations_about_steady_motion, unsimplified)."""
+    R = _R(s).R
+    at = {TH: theta0, THD: 0}
+    return [sp.diff(R, THD, 2).subs(at), -sp.diff(R, TH, 2).subs(at)]
 
 
 u = c3 - c2 * sp.cos(theta0)

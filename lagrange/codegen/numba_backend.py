@@ -19,7 +19,7 @@ from pathlib import Path
 
 from ..errors import BackendError
 
-__all__ = ["numba_rhs", "cache_dir"]
+__all__ = ["numba_rhs", "cache_dir", "write_module", "import_module"]
 
 _HEADER = "import math\nimport numpy as np\nimport numba\n\n\n"
 _DECORATOR = "@numba.njit(cache=True, error_model='python')\n"
@@ -33,26 +33,45 @@ def cache_dir() -> Path:
     return path
 
 
-def numba_rhs(source: str) -> Callable:
+def _require_numba(what: str):
     try:
         import numba
     except ImportError as exc:  # pragma: no cover - exercised when numba is absent
-        raise BackendError(
-            "backend='numba' needs numba: install it with `pip install lagrange[fast]` "
-            "or use backend='python'"
-        ) from exc
-    text = _HEADER + _DECORATOR + source
-    key = hashlib.sha256(
-        (text + numba.__version__ + sys.version).encode()
-    ).hexdigest()[:24]
-    path = cache_dir() / f"rhs_{key}.py"
+        raise BackendError(f"{what} needs numba: install it with `pip install lagrange[fast]`") from exc
+    return numba
+
+
+def write_module(prefix: str, text: str) -> tuple[str, Path]:
+    """Write generated module ``text`` to the cache as ``<prefix>_<hash>.py`` (atomically: concurrent
+    writers never leave a truncated file) and return its import name and path. The hash covers the text
+    and the numba and Python versions, so a stale entry is never reused."""
+    numba = _require_numba("compiled code")
+    key = hashlib.sha256((text + numba.__version__ + sys.version).encode()).hexdigest()[:24]
+    path = cache_dir() / f"{prefix}_{key}.py"
     if not path.exists() or path.read_text() != text:
-        # atomic write: concurrent writers never leave a truncated module behind
         fd, tmp = tempfile.mkstemp(dir=path.parent, suffix=".tmp")
         with os.fdopen(fd, "w") as fh:
             fh.write(text)
         os.replace(tmp, path)
-    name = f"lagrange_rhs_{key}"
+    return f"lagrange_{prefix}_{key}", path
+
+
+def import_module(name: str, path: Path):
+    """Import a generated module under a real name (numba's cache records it)."""
+    loaded = sys.modules.get(name)
+    if loaded is not None and getattr(loaded, "__file__", None) == str(path):
+        return loaded
+    spec = importlib.util.spec_from_file_location(name, path)
+    module = importlib.util.module_from_spec(spec)
+    assert spec.loader is not None
+    sys.modules[name] = module
+    spec.loader.exec_module(module)
+    return module
+
+
+def numba_rhs(source: str) -> Callable:
+    _require_numba("backend='numba' (or use backend='python')")
+    name, path = write_module("rhs", _HEADER + _DECORATOR + source)
     try:
         return _load(name, path)
     except Exception:  # noqa: BLE001 - a stale or corrupted numba cache entry: purge it and rebuild once
@@ -68,12 +87,8 @@ _SIGNATURE = "float64[::1](float64, float64[::1], float64[::1])"
 
 
 def _load(name: str, path: Path) -> Callable:
-    """Import the generated module under a real name (numba's cache records it) and compile eagerly,
-    so a broken cache shows up here, not in the middle of an integration."""
-    spec = importlib.util.spec_from_file_location(name, path)
-    module = importlib.util.module_from_spec(spec)
-    assert spec.loader is not None
-    sys.modules[name] = module
-    spec.loader.exec_module(module)
+    """Import the generated module and compile eagerly, so a broken cache shows up here, not in the
+    middle of an integration."""
+    module = import_module(name, path)
     module.rhs.compile(_SIGNATURE)
     return module.rhs

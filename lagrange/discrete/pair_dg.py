@@ -27,20 +27,14 @@ steps run without Python in the loop.
 
 from __future__ import annotations
 
-import hashlib
-import importlib.util
-import os
-import sys
-import tempfile
 from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
 import sympy as sp
 
-from ..codegen.numba_backend import cache_dir
 from ..codegen.source import print_expr
-from ..errors import BackendError, IntegrationError
+from ..errors import IntegrationError
 
 __all__ = ["divided_difference", "PairSystem", "DGResult"]
 
@@ -248,28 +242,10 @@ def run(x0, v0, m, g, free, dt, steps, record_every, fall_particles, tol, max_it
 
 
 def _module(source: str):
-    try:
-        import numba
-    except ImportError as exc:  # pragma: no cover
-        raise BackendError("the discrete-gradient particle integrator is compiled with numba: "
-                           "pip install lagrange[fast]") from exc
-    text = "import math\nimport numpy as np\nimport numba\n" + source
-    key = hashlib.sha256((text + numba.__version__ + sys.version).encode()).hexdigest()[:24]
-    path = cache_dir() / f"pairdg_{key}.py"
-    if not path.exists() or path.read_text() != text:
-        fd, tmp = tempfile.mkstemp(dir=path.parent, suffix=".tmp")
-        with os.fdopen(fd, "w") as fh:
-            fh.write(text)
-        os.replace(tmp, path)
-    name = f"lagrange_pairdg_{key}"
-    if name in sys.modules:
-        return sys.modules[name]
-    spec = importlib.util.spec_from_file_location(name, path)
-    mod = importlib.util.module_from_spec(spec)
-    sys.modules[name] = mod
-    assert spec.loader is not None
-    spec.loader.exec_module(mod)
-    return mod
+    from ..codegen.numba_backend import _require_numba, import_module, write_module
+
+    _require_numba("the discrete-gradient particle integrator")
+    return import_module(*write_module("pairdg", "import math\nimport numpy as np\nimport numba\n" + source))
 
 
 @dataclass(frozen=True)
