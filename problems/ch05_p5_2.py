@@ -3,8 +3,8 @@
 
 import sympy as sp
 
-from lagrange import Particle, System, coordinates, parameters
-from lagrange.corpus import Problem, Quantity
+from lagrange import Particle, System, coordinates, parameters, t
+from lagrange.corpus import Problem, Quantity, Simulation
 
 x, y = coordinates("x y")
 m, k, B = parameters("m k B")
@@ -30,6 +30,7 @@ PROBLEMS = [
         source="Wells, Problem 5.2 (force of Problem 5.1(c))",
         system=curl,
         answers=[Quantity("closed-path work", _loop_work, 2 * k * (x2 - x1) * (y2 - y1))],
+        simulation=Simulation(params={m: 1, k: 1}, initial={x: 1, y: 0, x.diff(t): 0, y.diff(t): 0}, t_end=2),
     ),
     Problem(
         id="p5.2-exact",
@@ -38,5 +39,6 @@ PROBLEMS = [
         source="Wells, Problem 5.2",
         system=exact,
         answers=[Quantity("closed-path work", _loop_work, 0)],
+        simulation=Simulation(params={m: 1, B: 0.1}, initial={x: 1, y: 1, x.diff(t): 0, y.diff(t): 0}, t_end=1),
     ),
 ]

@@ -49,8 +49,7 @@ PROBLEM = Problem(
         Quantity("(b) f1, f2, f3", _forces, [F1, F2, F3]),
         Quantity("(c) f2 mounted on m1: f1 replaced by f1 − f2 in the first equation", _forces_c, [F1, F2, F3]),
     ],
-    simulation=Simulation(params={m1: 2, m2: 1, m3: 0.5, a1: 0.3, a2: 0.4, b1: 0.2, b2: 0.1, v: 1, A: 0, B: 1,
-                                  w: 2, X1: 0, X2: 1},
+    simulation=Simulation(params={m1: 2, m2: 1, m3: 0.5, a1: 0.3, a2: 0.4, b1: 0.2, b2: 0.1},
                           initial={x1: 0, x2: 1, q2: 0, x1d: 1, x2d: 1, q2d: 0}, t_end=5),
     correction="T and the dissipation function are implied by the book's equations (verified in the catalog); "
                "the drag is a Rayleigh function D (Wells' P = −D).",

@@ -76,7 +76,22 @@ def dd_mid(a, b):
 
 
 @numba.njit(cache=True)
-def _residual(X, x, v, m, g, dt, F, with_jac, Jfull):
+def ext_U(x, y, z):
+    return {U}
+
+
+@numba.njit(cache=True)
+def ext_grad(x, y, z):
+    return np.array([{Ux}, {Uy}, {Uz}])
+
+
+@numba.njit(cache=True)
+def ext_hess(x, y, z):
+    return np.array([[{Uxx}, {Uxy}, {Uxz}], [{Uxy}, {Uyy}, {Uyz}], [{Uxz}, {Uyz}, {Uzz}]])
+
+
+@numba.njit(cache=True)
+def _residual(X, x, v, m, g, w, dt, F, with_jac, Jfull):
     N = x.shape[0]
     for i in range(N):
         for c in range(3):
@@ -89,6 +104,30 @@ def _residual(X, x, v, m, g, dt, F, with_jac, Jfull):
         for i in range(N):
             for c in range(3):
                 Jfull[3 * i + c, 3 * i + c] = 2.0 * m[i] / (dt * dt)
+    # external potential w_i U(x_i): Gonzalez' midpoint discrete gradient (exact energy balance)
+    for i in range(N):
+        if w[i] == 0.0:
+            continue
+        xm0 = 0.5 * (X[i, 0] + x[i, 0])
+        xm1 = 0.5 * (X[i, 1] + x[i, 1])
+        xm2 = 0.5 * (X[i, 2] + x[i, 2])
+        gr = ext_grad(xm0, xm1, xm2)
+        d0 = X[i, 0] - x[i, 0]
+        d1 = X[i, 1] - x[i, 1]
+        d2 = X[i, 2] - x[i, 2]
+        dsq = d0 * d0 + d1 * d1 + d2 * d2
+        corr = 0.0
+        if dsq > 1e-28 * (1.0 + xm0 * xm0 + xm1 * xm1 + xm2 * xm2):
+            dU = ext_U(X[i, 0], X[i, 1], X[i, 2]) - ext_U(x[i, 0], x[i, 1], x[i, 2])
+            corr = (dU - (gr[0] * d0 + gr[1] * d1 + gr[2] * d2)) / dsq
+        F[i, 0] += w[i] * (gr[0] + corr * d0)
+        F[i, 1] += w[i] * (gr[1] + corr * d1)
+        F[i, 2] += w[i] * (gr[2] + corr * d2)
+        if with_jac:
+            H = ext_hess(xm0, xm1, xm2)
+            for c in range(3):
+                for k in range(3):
+                    Jfull[3 * i + c, 3 * i + k] += 0.5 * w[i] * H[c, k]
     for i in range(N):
         for j in range(i + 1, N):
             n0 = X[i, 0] - X[j, 0]
@@ -166,7 +205,7 @@ def _lu_solve(LU, piv, b):
 
 
 @numba.njit(cache=True)
-def run(x0, v0, m, g, free, dt, steps, record_every, fall_particles, tol, max_iter, refresh):
+def run(x0, v0, m, g, w, free, dt, steps, record_every, fall_particles, tol, max_iter, refresh):
     # simplified Newton: the Jacobian (which changes little over dt) is refactored every `refresh` steps
     # and whenever an iteration stalls; each step iterates to the tolerance
     N = x0.shape[0]
@@ -196,7 +235,7 @@ def run(x0, v0, m, g, free, dt, steps, record_every, fall_particles, tol, max_it
         converged = False
         for it in range(max_iter):
             need = age >= refresh or it >= 4
-            _residual(X, x, v, m, g, dt, F, need, Jfull)
+            _residual(X, x, v, m, g, w, dt, F, need, Jfull)
             if need:
                 for p in range(nf):
                     for q in range(nf):
@@ -263,8 +302,10 @@ class DGResult:
 
 
 class PairSystem:
-    """Particles with one pair potential φ(r) (every pair), weights ``m_i g_i`` along −z, and fixed
-    coordinates (``fixed=[(particle, axis)]``, axis 0/1/2 for x/y/z, held at their initial values).
+    """Particles with one pair potential φ(r) (every pair), weights ``m_i g_i`` along −z, an optional
+    external potential ``w_i U(x, y, z)`` per particle (``external=U`` in the symbols x, y, z,
+    ``external_weights=w``; Gonzalez' midpoint discrete gradient keeps the energy balance exact), and
+    fixed coordinates (``fixed=[(particle, axis)]``, axis 0/1/2 for x/y/z, held at their initial values).
 
     >>> import sympy as sp
     >>> r = sp.Symbol("r", positive=True)
@@ -274,9 +315,11 @@ class PairSystem:
     """
 
     def __init__(self, masses: Sequence[float], potential, r: sp.Symbol, *, weights: Sequence[float] | None = None,
-                 fixed: Sequence[tuple[int, int]] = ()):
+                 fixed: Sequence[tuple[int, int]] = (), external=None, external_weights: Sequence[float] | None = None):
         self.masses = np.asarray(masses, dtype=float)
         N = len(self.masses)
+        if not np.all(self.masses > 0):
+            raise ValueError("particle masses must be positive")
         self.g = np.zeros(N) if weights is None else np.asarray(weights, dtype=float)
         self.fixed = tuple(fixed)
         self.potential = sp.sympify(potential)
@@ -284,8 +327,21 @@ class PairSystem:
         D, Db, exact = divided_difference(self.potential, r)
         self.exact = exact
         dphi_mid = sp.diff(self.potential, r).subs(r, (_a + _b) / 2)
+        X, Y, Z = sp.symbols("x y z", real=True)
+        U = sp.sympify(external if external is not None else 0)
+        bad = U.free_symbols - {X, Y, Z}
+        if bad:
+            raise ValueError(f"the external potential may use only x, y, z (Symbol('x', real=True), …); got {bad}")
+        self.external = U
+        self.w = np.zeros(N) if external_weights is None else np.asarray(external_weights, dtype=float)
+        grads = [sp.diff(U, s) for s in (X, Y, Z)]
+        hes = {f"U{a}{b}": sp.diff(U, sa, sb) for a, sa in zip("xyz", (X, Y, Z)) for b, sb in zip("xyz", (X, Y, Z))}
         src = _TEMPLATE.format(D=print_expr(D), Db=print_expr(Db), dphi_mid=print_expr(dphi_mid),
-                               DCALL="dd(a, b)" if exact else "dd_mid(a, b)")
+                               DCALL="dd(a, b)" if exact else "dd_mid(a, b)", U=print_expr(U) + " + 0.0 * x",
+                               Ux=print_expr(grads[0]) + " + 0.0 * x", Uy=print_expr(grads[1]) + " + 0.0 * y",
+                               Uz=print_expr(grads[2]) + " + 0.0 * z",
+                               **{k: print_expr(v) + " + 0.0 * x" for k, v in hes.items()})
+        self._U = sp.lambdify((X, Y, Z), U, "numpy")
         self._mod = _module(src)
         self._phi = sp.lambdify(r, self.potential, "numpy")
         free = [3 * i + c for i in range(N) for c in range(3) if (i, c) not in self.fixed]
@@ -303,6 +359,9 @@ class PairSystem:
             for j in range(i + 1, N):
                 pe += self._phi(np.linalg.norm(x[:, i] - x[:, j], axis=1))
         pe += np.einsum("i,ki->k", self.masses * self.g, x[:, :, 2])
+        for i in range(N):
+            if self.w[i]:
+                pe += self.w[i] * np.broadcast_to(self._U(x[:, i, 0], x[:, i, 1], x[:, i, 2]), pe.shape)
         return ke + pe
 
     def integrate(self, x0, v0, *, dt: float, steps: int, record_every: int = 1,
@@ -315,7 +374,7 @@ class PairSystem:
         x0 = np.ascontiguousarray(x0, dtype=float)
         v0 = np.ascontiguousarray(v0, dtype=float)
         xs, vs, status, fell_at, its = self._mod.run(
-            x0, v0, self.masses, self.g, self._free, float(dt), int(steps), int(record_every),
+            x0, v0, self.masses, self.g, self.w, self._free, float(dt), int(steps), int(record_every),
             np.asarray(fall_particles, dtype=np.int64), float(tol), int(max_iter), int(refresh))
         if status == 2:
             raise IntegrationError("discrete-gradient step: Newton did not converge; reduce dt")
