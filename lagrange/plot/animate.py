@@ -75,6 +75,13 @@ def animate(system, trajectory, path: str | Path | None = None, *, links: str | 
     import matplotlib
 
     if path is not None:
+        suffix = Path(path).suffix.lower()
+        if suffix not in (".gif", ".mp4"):
+            raise LagrangeError(f"cannot save an animation as {suffix!r}: use .gif or .mp4")
+        from matplotlib.animation import writers
+
+        if suffix == ".mp4" and not writers.is_available("ffmpeg"):
+            raise LagrangeError("saving MP4 needs ffmpeg on the PATH; save as .gif instead")
         matplotlib.use("Agg", force=False)
     import matplotlib.pyplot as plt
     from matplotlib.animation import FuncAnimation
@@ -142,14 +149,8 @@ def animate(system, trajectory, path: str | Path | None = None, *, links: str | 
             from matplotlib.animation import PillowWriter
 
             anim.save(path, writer=PillowWriter(fps=fps))
-        elif path.suffix.lower() == ".mp4":
-            from matplotlib.animation import writers
-
-            if not writers.is_available("ffmpeg"):
-                raise LagrangeError("saving MP4 needs ffmpeg on the PATH; save as .gif instead")
-            anim.save(path, writer="ffmpeg", fps=fps)
         else:
-            raise LagrangeError(f"cannot save an animation as {path.suffix!r}: use .gif or .mp4")
+            anim.save(path, writer="ffmpeg", fps=fps)
         plt.close(fig)
     return anim
 
