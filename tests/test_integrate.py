@@ -156,3 +156,21 @@ def test_trajectory_lookup_csv_and_plot(tmp_path):
     png = tmp_path / "p.png"
     sol.plot(png)
     assert png.stat().st_size > 10_000
+
+
+def test_auto_detects_stiff_dissipation():
+    """Double pendulum with strong joint damping (numerics.md hard case 2, c = 1e4): explicit methods
+    need ~300,000 evaluations; auto picks Radau and says why."""
+    from lagrange.examples import n_link_pendulum
+
+    base = n_link_pendulum(2)
+    q1, q2 = base.coordinates
+    c = parameters("c")
+    s = System(base.coordinates, bodies=base.bodies, V=base.V,
+               rayleigh=c * (q1.diff(t) ** 2 + (q2.diff(t) - q1.diff(t)) ** 2) / 2)
+    ic = {q1: 0.3, q2: -0.2, q1.diff(t): 0, q2.diff(t): 0}
+    sol = s.simulate(10, ic, {"g": 9.81, "c": 1e4}, method="auto", rtol=1e-6, atol=1e-8)
+    assert sol.method.startswith("Radau (auto: stiff")
+    assert sol.nfev < 5_000
+    soft = s.simulate(1, ic, {"g": 9.81, "c": 0.01}, method="auto")
+    assert not soft.method.startswith("Radau")

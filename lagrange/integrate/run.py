@@ -67,14 +67,36 @@ def initial_state(coords: Sequence, initial: Mapping) -> np.ndarray:
     return np.array([slots[i] for i in range(2 * n)], dtype=float)
 
 
-def choose_method(eqs) -> tuple[str, str]:
+def _stiffness(eqs, params, t_span, y0) -> tuple[float, float] | None:
+    """(fastest decay rate max(−Re λ), stiffness ratio) of the Jacobian at the initial state, or None."""
+    if eqs.m or params is None or y0 is None:
+        return None
+    try:
+        model = compile_equations(eqs, params)
+        lam = np.linalg.eigvals(jacobian_function(model)(float(t_span[0]), y0))
+    except (LagrangeError, np.linalg.LinAlgError, ValueError, TypeError, ZeroDivisionError):
+        return None
+    decay = float(np.max(-lam.real, initial=0.0))
+    nonzero = np.abs(lam)[np.abs(lam) > 1e-9 * max(1.0, float(np.max(np.abs(lam))))]
+    slow = float(np.min(nonzero)) if nonzero.size else 1.0
+    return decay, decay / slow
+
+
+def choose_method(eqs, params=None, t_span=(0.0, 1.0), y0=None) -> tuple[str, str]:
     """A sensible scipy method and the reason (``method="auto"``).
 
-    Dissipative systems (P or D present) may be stiff: LSODA switches automatically between Adams
-    and BDF. Conservative or forced systems: DOP853, the most efficient at tight tolerances.
+    From the Jacobian's eigenvalues at the initial state: a fast decay (rate × horizon > 10³) much faster
+    than the slowest mode (ratio > 10³) is stiffness → Radau with the generated Jacobian (explicit methods
+    would need hundreds of thousands of steps). Otherwise dissipative systems (P or D) get LSODA, which
+    switches to BDF if stiffness appears later, and the rest DOP853, the most efficient at tight tolerances.
     """
+    horizon = abs(float(t_span[1]) - float(t_span[0]))
+    st = _stiffness(eqs, params, t_span, y0)
+    if st is not None and st[0] * horizon > 1e3 and st[1] > 1e3:
+        return "Radau", (f"stiff: fastest decay rate {st[0]:.3g}/time over a horizon of {horizon:g} "
+                         f"(stiffness ratio {st[1]:.3g}); Radau with the generated Jacobian")
     if eqs.power_function != 0 or eqs.rayleigh != 0:
-        return "LSODA", "dissipation present (P or rayleigh): possibly stiff, LSODA switches to BDF if so"
+        return "LSODA", "dissipation present (P or rayleigh): possibly stiff later, LSODA switches to BDF if so"
     return "DOP853", "no dissipation: non-stiff, DOP853 is the most efficient explicit method"
 
 
@@ -310,7 +332,7 @@ def simulate(
         raise TypeError("sign() switches (dry friction) with constraints: use friction='regularize'")
     why = ""
     if method == "auto":
-        method, why = choose_method(eqs)
+        method, why = choose_method(eqs, params, (t0, t1), initial_state(eqs.coordinates, initial))
     from .fixed import GEOMETRIC, integrate_fixed
 
     if method in GEOMETRIC:
