@@ -26,7 +26,8 @@ from ..conventions import t
 from ..errors import LagrangeError
 from ..model.coordinates import coordinate_name, position_symbol, to_functions, velocity_symbol
 
-__all__ = ["equilibrium_equations", "equilibria", "linearize", "LinearModel", "Modes", "normal_modes"]
+__all__ = ["equilibrium_equations", "equilibria", "linearize", "LinearModel", "Modes", "normal_modes",
+           "characteristic_roots"]
 
 
 def _state_map(system, point: Mapping) -> dict:
@@ -221,5 +222,3 @@ def characteristic_roots(linear: LinearModel, params: Mapping) -> np.ndarray:
     A = np.block([[np.zeros((n, n)), np.eye(n)], [-np.linalg.solve(a, c), -np.linalg.solve(a, b)]])
     return np.sort_complex(np.linalg.eigvals(A))
 
-
-__all__.append("characteristic_roots")

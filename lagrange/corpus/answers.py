@@ -384,12 +384,12 @@ class ConstraintForce(Answer):
         c = system.coordinates
         expr = to_symbols(sp.sympify(self.expected), c)
         syms = [*eqs.q, *eqs.qd, *eqs.qdd, t]
-        values = {s_.name: v for s_, v in self.params.items()} if self.params else {}
-        par = {p: float(values.get(p.name, self.params.get(p, 0.0) if hasattr(self.params, "get") else 0.0))
-               for p in expr.free_symbols if p not in syms}
-        missing = [p.name for p in par if p.name not in values]
+        values = {getattr(k, "name", str(k)): v for k, v in (self.params or {}).items()}
+        free = [p for p in expr.free_symbols if p not in syms]
+        missing = sorted(p.name for p in free if p.name not in values)
         if missing:
             raise Mismatch(f"parameter values missing for {', '.join(missing)}")
+        par = {p: float(values[p.name]) for p in free}
         fn = sp.lambdify(syms, expr.subs(par), modules="numpy")
         cols = [sol.y[:, i] for i in range(2 * eqs.n)] + [sol.accelerations[:, i] for i in range(eqs.n)] + [sol.t]
         want = np.broadcast_to(np.asarray(fn(*cols), dtype=float), got.shape)
