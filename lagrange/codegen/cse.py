@@ -15,7 +15,7 @@ import sympy as sp
 from ..conventions import t
 from ..derive.equations import Equations
 
-__all__ = ["FusedExpressions", "fuse", "rename_map"]
+__all__ = ["FusedExpressions", "fuse", "rename_map", "numeric_arguments"]
 
 
 def rename_map(eqs: Equations) -> dict:
@@ -26,6 +26,14 @@ def rename_map(eqs: Equations) -> dict:
     m.update({s: sp.Symbol(f"p{k}", real=True) for k, s in enumerate(eqs.numeric_parameters)})
     m[t] = sp.Symbol("t", real=True)
     return m
+
+
+def numeric_arguments(eqs: Equations) -> tuple[sp.Symbol, tuple, list]:
+    """``(t, y, p)`` in generated-code names — the argument symbols of every numeric function built from
+    ``eqs`` (``y`` has 2n entries, positions first; ``p`` follows ``eqs.numeric_parameters``)."""
+    ren = rename_map(eqs)
+    y = tuple(ren[s] for s in (*eqs.q, *eqs.qd))
+    return ren[t], y, [ren[s] for s in eqs.numeric_parameters]
 
 
 @dataclass(frozen=True)

@@ -26,11 +26,10 @@ from functools import cached_property
 import numpy as np
 import sympy as sp
 
-from ..conventions import t
 from ..derive.equations import Equations
 from ..errors import BackendError, ParameterError, SingularMassMatrixError
 from ..model.coordinates import coordinate_name
-from .cse import fuse, rename_map
+from .cse import fuse, numeric_arguments, rename_map
 from .source import rhs_source
 
 __all__ = ["NumericModel", "ConstraintFunctions", "compile_equations", "bind_parameters", "BACKENDS"]
@@ -194,9 +193,7 @@ class NumericModel:
 def _reference_functions(eqs: Equations):
     ren = rename_map(eqs)
     n = eqs.n
-    ys = sp.symbols(f"y0:{2 * n}", real=True) if n else ()
-    ps = [ren[s] for s in eqs.numeric_parameters]
-    tt = ren[t]
+    tt, ys, ps = numeric_arguments(eqs)
     M = eqs.mass_matrix.xreplace(ren)
     f = eqs.forcing.xreplace(ren)
     mf = sp.lambdify((tt, ys, ps), (M, f), modules="numpy", cse=False)
@@ -229,14 +226,12 @@ def _reference_functions(eqs: Equations):
 
 def _aux_function(eqs: Equations):
     ren = rename_map(eqs)
-    n = eqs.n
-    ys = sp.symbols(f"y0:{2 * n}", real=True)
-    ps = [ren[s] for s in eqs.numeric_parameters]
+    tt, ys, ps = numeric_arguments(eqs)
     T0 = eqs.kinetic.subs({v: 0 for v in eqs.qd})
     qd = sp.Matrix(eqs.qd)
     T2 = (qd.T * eqs.mass_matrix * qd)[0, 0] / 2
     exprs = [e.xreplace(ren) for e in (eqs.kinetic, eqs.potential, eqs.jacobi, eqs.jacobi_rate, T2, T0)]
-    f = sp.lambdify((ren[t], ys, ps, list(eqs.multipliers)), exprs, modules="numpy", cse=True)
+    f = sp.lambdify((tt, ys, ps, list(eqs.multipliers)), exprs, modules="numpy", cse=True)
 
     def aux(t_, cols, p, lam):
         return f(t_, cols, list(p), list(lam))
@@ -256,12 +251,12 @@ class ConstraintFunctions:
     def __init__(self, eqs: Equations, params: np.ndarray):
         ren = rename_map(eqs)
         n = eqs.n
-        qs = sp.symbols(f"y0:{n}", real=True)
-        ps = [ren[s] for s in eqs.numeric_parameters]
+        tt, ys, ps = numeric_arguments(eqs)
+        qs = ys[:n]
         self.holonomic = [k for k, ph in enumerate(eqs.constraint_positions) if ph is not None]
         phis = [eqs.constraint_positions[k].xreplace(ren) for k in self.holonomic]
         Ah = sp.Matrix([[sp.diff(ph, qj) for qj in qs] for ph in phis]) if phis else sp.zeros(0, n)
-        args = (ren[t], qs, ps)
+        args = (tt, qs, ps)
         self._phi = sp.lambdify(args, phis, modules="math", cse=True)
         self._Ah = sp.lambdify(args, Ah, modules="numpy", cse=True)
         self._A = sp.lambdify(args, eqs.constraint_matrix.xreplace(ren), modules="numpy", cse=True)

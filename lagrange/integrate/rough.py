@@ -20,8 +20,7 @@ import numpy as np
 import sympy as sp
 from scipy.integrate import solve_ivp
 
-from ..codegen.cse import rename_map
-from ..conventions import t
+from ..codegen.cse import numeric_arguments, rename_map
 from ..errors import IntegrationError
 from .stepper import step_loop
 from .switching import _Result
@@ -34,10 +33,9 @@ _MAX_SEGMENTS = 10_000
 def _sliding_functions(model):
     eqs = model.equations
     ren = rename_map(eqs)
-    ys = sp.symbols(f"y0:{2 * eqs.n}", real=True)
-    ps = [ren[s] for s in eqs.numeric_parameters]
+    tt, ys, ps = numeric_arguments(eqs)
     exprs = [v.xreplace(ren) for _, v in eqs.sliding_velocities]
-    fn = sp.lambdify((ren[t], ys, ps), exprs, modules="math")
+    fn = sp.lambdify((tt, ys, ps), exprs, modules="math")
     return lambda t_, y, p: fn(t_, list(y), list(p))
 
 

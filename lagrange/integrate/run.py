@@ -14,9 +14,9 @@ import numpy as np
 import sympy as sp
 from scipy.integrate import solve_ivp
 
-from ..codegen.cse import rename_map
+from ..codegen.cse import numeric_arguments, rename_map
 from ..codegen.numeric import NumericModel, compile_equations, lam_required
-from ..conventions import VELOCITY_SUFFIX, t
+from ..conventions import VELOCITY_SUFFIX
 from ..errors import InitialConditionError, IntegrationError, LagrangeError, SingularMassMatrixError
 from ..model.coordinates import coordinate_name, is_coordinate
 from ..results.trajectory import Trajectory
@@ -104,9 +104,8 @@ def _power_function(model: NumericModel):
     """``power(t, y_list, lam_list)``: dh/dt, the power of everything not in L (incl. moving constraints)."""
     eqs = model.equations
     ren = rename_map(eqs)
-    ys = sp.symbols(f"y0:{2 * eqs.n}", real=True)
-    ps = [ren[s] for s in eqs.numeric_parameters]
-    f = sp.lambdify((ren[t], ys, ps, list(eqs.multipliers)), eqs.jacobi_rate.xreplace(ren), modules="math", cse=True)
+    tt, ys, ps = numeric_arguments(eqs)
+    f = sp.lambdify((tt, ys, ps, list(eqs.multipliers)), eqs.jacobi_rate.xreplace(ren), modules="math", cse=True)
     p = list(model.params)
     return lambda t_, y, lam=(): f(t_, y, p, list(lam) + [0.0] * (eqs.m - len(lam)))
 

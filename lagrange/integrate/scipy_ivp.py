@@ -15,9 +15,8 @@ from collections.abc import Callable
 import numpy as np
 import sympy as sp
 
-from ..codegen.cse import rename_map
+from ..codegen.cse import numeric_arguments, rename_map
 from ..codegen.numeric import NumericModel
-from ..conventions import t
 
 __all__ = ["SCIPY_METHODS", "IMPLICIT_METHODS", "jacobian_function"]
 
@@ -30,13 +29,12 @@ def jacobian_function(model: NumericModel) -> Callable:
     eqs = model.equations
     n = eqs.n
     ren = rename_map(eqs)
-    ys = sp.symbols(f"y0:{2 * n}", real=True)
-    ps = [ren[s] for s in eqs.numeric_parameters]
+    tt, ys, ps = numeric_arguments(eqs)
     M = eqs.mass_matrix.xreplace(ren)
     f = eqs.forcing.xreplace(ren)
     dM = [M.diff(y) for y in ys]
     df = f.jacobian(ys)
-    fn = sp.lambdify((ren[t], ys, ps), (M, f, df, dM), modules="numpy", cse=True)
+    fn = sp.lambdify((tt, ys, ps), (M, f, df, dM), modules="numpy", cse=True)
     params = list(model.params)
 
     def jac(t_, y):

@@ -33,7 +33,7 @@ import numpy as np
 import sympy as sp
 from scipy.integrate import solve_ivp
 
-from ..codegen.cse import rename_map
+from ..codegen.cse import numeric_arguments, rename_map
 from ..conventions import t
 from ..derive.equations import Equations
 from ..errors import IntegrationError
@@ -100,16 +100,15 @@ def run_switched(model, switches, t_span, z0, t_eval, events, kwargs, with_work)
     n2 = 2 * n
     K = len(switches)
     ren = rename_map(eqs)
-    ys = sp.symbols(f"y0:{n2}", real=True)
-    u_fn = sp.lambdify((ren[t], ys), [u.xreplace(ren) for u in switches], modules="math")
+    tt, ys, ps = numeric_arguments(eqs)  # switched eqs carry the σ's among their parameters
+    u_fn = sp.lambdify((tt, ys), [u.xreplace(ren) for u in switches], modules="math")
     grads = [
-        sp.lambdify((ren[t], ys), [sp.diff(u, s).xreplace(ren) for s in (*eqs.q, *eqs.qd, t)], modules="math")
+        sp.lambdify((tt, ys), [sp.diff(u, s).xreplace(ren) for s in (*eqs.q, *eqs.qd, t)], modules="math")
         for u in switches
     ]
     pw = None
     if with_work:
-        ps = [ren[s] for s in eqs.parameters]
-        pw = sp.lambdify((ren[t], ys, ps, list(eqs.multipliers)), eqs.jacobi_rate.xreplace(ren), modules="math",
+        pw = sp.lambdify((tt, ys, ps, list(eqs.multipliers)), eqs.jacobi_rate.xreplace(ren), modules="math",
                          cse=True)
     rhs = sw_model.rhs
     nparam = len(eqs0.parameters)
