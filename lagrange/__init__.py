@@ -11,7 +11,9 @@ from .analysis.variational import action, euler_lagrange, variational_integrate
 from .conventions import t
 from .errors import (
     BackendError,
+    CollisionError,
     DeclarationError,
+    InconsistentConstraintError,
     InitialConditionError,
     IntegrationError,
     LagrangeError,
@@ -19,6 +21,7 @@ from .errors import (
     SingularMassMatrixError,
     SpecError,
 )
+from .gauss.check import GaussCheck, check_gauss
 from .model.bodies import Force, Particle
 from .model.constraints import Differential, Holonomic, IntegrableConstraintWarning, Nonholonomic, Rough
 from .model.coordinates import coordinates, delta, parameters
@@ -28,6 +31,7 @@ from .model.rigid_body import RigidBody, Torque
 from .model.rotations import EulerAngles, Quaternion, rot_x, rot_y, rot_z
 from .model.system import System
 from .printing import latex, pretty
+from .sweep import sweep
 
 __version__ = "0.1.0"
 
@@ -68,6 +72,7 @@ __all__ = [
     "euler_lagrange",
     "action",
     "variational_integrate",
+    "sweep",
     "pretty",
     "LagrangeError",
     "DeclarationError",
@@ -77,5 +82,9 @@ __all__ = [
     "IntegrationError",
     "SpecError",
     "BackendError",
+    "InconsistentConstraintError",
+    "CollisionError",
+    "check_gauss",
+    "GaussCheck",
     "__version__",
 ]

@@ -196,6 +196,69 @@ def _greenspan_molecular(args) -> int:
     return 0
 
 
+def _cmd_sweep(args) -> int:
+    import time
+
+    from .sweep import parse_range, sweep
+
+    over = {}
+    for item in args.over:
+        if "=" not in item:
+            raise SpecError(f"--over expects name=start:stop:num (or name=a,b,c), got {item!r}")
+        name, rng = item.split("=", 1)
+        over[name.strip()] = parse_range(rng.strip())
+    common = dict(random=args.random, seed=args.seed, workers=args.workers, store=args.store, resume=args.resume,
+                  progress=not args.no_progress)
+    t0 = time.perf_counter()
+    if args.spec.lower().startswith("greenspan"):
+        from .sweep.greenspan_map import stability_task
+
+        if set(over) - {"V", "alpha_deg"}:
+            raise SpecError("greenspan sweeps take --over V=… and --over alpha_deg=… (spin and tilt in degrees)")
+        task = stability_task(args.t_end or 110.0, rtol=args.rtol, atol=args.atol, backend=args.backend)
+        table = sweep(task, over, **common)
+    else:
+        from .spec.loader import load_spec
+
+        spec = load_spec(args.spec)
+        if spec.system is None:
+            raise SpecError(f"{args.spec}: this problem has no equations of motion to sweep")
+        t_end = args.t_end if args.t_end is not None else spec.t_end
+        if t_end is None:
+            raise SpecError(f"{args.spec}: no end time: pass --t-end")
+        options = {**spec.options, "method": args.method, "rtol": args.rtol, "atol": args.atol}
+        table = sweep(spec.system, over, t_end=float(t_end), initial={**spec.initial, **_kv(args.initial, "initial")},
+                      params={**spec.params, **_kv(args.param, "param")}, backend=args.backend, **common, **options)
+    wall = time.perf_counter() - t0
+    counts = table["status"].value_counts().to_dict()
+    print(table.drop(columns=["run_id"]).to_string(max_rows=40))
+    print(f"{len(table)} runs: " + ", ".join(f"{v} {k}" for k, v in sorted(counts.items())) +
+          f"; {wall:.1f} s ({len(table) / wall:.2f} runs/s)")
+    if args.out:
+        if args.out.lower().endswith(".parquet"):
+            table.to_parquet(args.out, index=False)
+        else:
+            table.to_csv(args.out, index=False)
+        print(f"table written to {args.out}")
+    return 0
+
+
+def _cmd_bench(args) -> int:
+    from .bench.suite import run_suite
+
+    run_suite(args.problem, quick=args.quick, out=args.out, heyoka=not args.no_heyoka)
+    return 0
+
+
+def _cmd_check(args) -> int:
+    from .gauss.check import check_spec
+    from .spec.loader import load_spec
+
+    result = check_spec(load_spec(args.spec), samples=args.samples, seed=args.seed, params=_kv(args.param, "param"))
+    print(result)
+    return 0 if result.ok or not result.applicable else 1
+
+
 def _cmd_verify(args) -> int:
     from .corpus.registry import all_problems, get_problem
 
@@ -310,6 +373,41 @@ def _parser() -> argparse.ArgumentParser:
     p = sub.add_parser("hamiltonian", help="print H and Hamilton's canonical equations")
     p.add_argument("spec", help=spec_help)
     p.set_defaults(func=_cmd_hamiltonian)
+
+    p = sub.add_parser("sweep", help="run a grid or random sample of parameters/initial values, tabulate results")
+    p.add_argument("spec", help=spec_help + "; or greenspan (the top's stability map over V and alpha_deg)")
+    p.add_argument("--over", action="append", required=True, metavar="NAME=START:STOP:NUM",
+                   help="a swept quantity (parameter, coordinate, q_dot) and its values (or NAME=a,b,c)")
+    p.add_argument("--random", type=int, metavar="N", help="N Latin-hypercube points in the ranges instead of the grid")
+    p.add_argument("--seed", type=int, default=0, help="seed of --random (default 0)")
+    p.add_argument("--workers", type=int, help="worker processes (default: CPU count; 0: in this process)")
+    p.add_argument("--out", help="write the table to this .csv (or .parquet) path")
+    p.add_argument("--store", help="append each finished run to this .csv/.parquet store as it completes")
+    p.add_argument("--resume", action="store_true", help="with --store: skip the runs already stored")
+    p.add_argument("--t-end", type=float, help="end time (default: the spec's)")
+    p.add_argument("--method", default="DOP853")
+    p.add_argument("--rtol", type=float, default=1e-9)
+    p.add_argument("--atol", type=float, default=1e-11)
+    p.add_argument("--backend", default="python", help="python (default), numba, reference or auto")
+    p.add_argument("--param", action="append", metavar="NAME=VALUE", help="override a parameter value")
+    p.add_argument("--initial", action="append", metavar="NAME=VALUE", help="override an initial value (x, x_dot)")
+    p.add_argument("--no-progress", action="store_true", help="no progress bar")
+    p.set_defaults(func=_cmd_sweep)
+
+    p = sub.add_parser("bench", help="work-precision benchmarks: error against time and evaluations, energy drift")
+    p.add_argument("--problem", action="append", metavar="NAME",
+                   help="double_pendulum, nlink, top, kepler, stiff, stick_slip or greenspan (default: all)")
+    p.add_argument("--quick", action="store_true", help="short runs, two tolerances, python backend (seconds)")
+    p.add_argument("--out", help="write workprecision.md, .json and one PNG per problem into this directory")
+    p.add_argument("--no-heyoka", action="store_true", help="skip the heyoka.py comparison even if installed")
+    p.set_defaults(func=_cmd_bench)
+
+    p = sub.add_parser("check", help="compare Lagrange's accelerations with Gauss' principle at random states")
+    p.add_argument("spec", help=spec_help)
+    p.add_argument("--samples", type=int, default=5, help="number of random states (default 5)")
+    p.add_argument("--seed", type=int, default=0, help="seed of the random states (default 0)")
+    p.add_argument("--param", action="append", metavar="NAME=VALUE", help="override a parameter value")
+    p.set_defaults(func=_cmd_check)
 
     p = sub.add_parser("verify", help="check corpus problems against the book's answers")
     p.add_argument("ids", nargs="*", help="problem ids (default: all)")

@@ -41,15 +41,31 @@ class InitialConditionError(LagrangeError, ValueError):
 
 
 class SingularMassMatrixError(LagrangeError, ValueError):
-    """The mass matrix is singular (or numerically so) at a state."""
+    """The mass matrix is singular (or numerically so) at a state; the message names the coordinates.
+
+    Raised during a run it carries the same ``t``, ``state`` and ``partial`` as :class:`IntegrationError`
+    (all None when raised before integration starts).
+    """
+
+    def __init__(self, message: str, *, t: float | None = None, state: dict | None = None, partial=None):
+        self.t = t
+        self.state = state
+        self.partial = partial
+        super().__init__(message)
 
 
 class IntegrationError(LagrangeError, RuntimeError):
-    """Numerical integration failed; the message gives the time, the state and the likely cause."""
+    """Numerical integration failed; the message gives the time, the state and the likely cause.
 
-    def __init__(self, message: str, *, t: float | None = None, state: dict | None = None):
+    ``t`` and ``state`` say where it stopped; ``partial`` is the
+    :class:`~lagrange.results.trajectory.Trajectory` computed up to that time (None when nothing could be
+    kept).
+    """
+
+    def __init__(self, message: str, *, t: float | None = None, state: dict | None = None, partial=None):
         self.t = t
         self.state = state
+        self.partial = partial
         super().__init__(message)
 
 
@@ -61,6 +77,26 @@ class BackendError(LagrangeError, RuntimeError):
     """A code-generation backend is unavailable or failed."""
 
 
+class InconsistentConstraintError(LagrangeError, ValueError):
+    """Constraints contradict each other at the acceleration level (a jammed mechanism, Sonneveld
+    Lemma 7(ii)): no acceleration satisfies them all. ``constraints`` names the ones involved."""
+
+    def __init__(self, message: str, *, constraints: Sequence[str] = ()):
+        self.constraints = tuple(constraints)
+        super().__init__(message)
+
+
+class CollisionError(LagrangeError, ValueError):
+    """A collision cannot happen as posed (bodies not approaching, restitution outside [0, 1]) or its
+    outcome would create kinetic energy."""
+
+
+
+class SweepError(LagrangeError, ValueError):
+    """A sweep is misdeclared (unknown quantity, bad range, unpicklable task, existing store) or an optional
+    dependency of sweeps is missing (the message names the extra to install)."""
+
+
 __all__ = [
     "LagrangeError",
     "DeclarationError",
@@ -70,4 +106,7 @@ __all__ = [
     "IntegrationError",
     "SpecError",
     "BackendError",
+    "SweepError",
+    "InconsistentConstraintError",
+    "CollisionError",
 ]

@@ -1,8 +1,10 @@
 """The compiled backend: the generated source under ``numba.njit(cache=True)``.
 
-The source is written as a real module file in the cache directory, named by a hash of its text (and
-the numba and Python versions), so numba's on-disk cache is valid exactly when the model is: a re-run
-with the same model skips the JIT, a changed model gets a new file. Numba is optional
+The source is written as a real module file in the cache directory, named by a hash of its text and of
+the lagrange, numba, NumPy and Python versions (:func:`cache_key`), so numba's on-disk cache is valid
+exactly when the model is: a re-run with the same model skips the JIT, a changed model or an upgrade gets a
+new file. Entries are written atomically and checked on use; a corrupted numba cache is purged and rebuilt
+(``tests/test_cache.py``). Numba is optional
 (``pip install lagrange[fast]``); a clear :class:`~lagrange.errors.BackendError` says so when it is
 missing.
 """
@@ -12,6 +14,7 @@ from __future__ import annotations
 import hashlib
 import importlib.util
 import os
+import platform
 import sys
 import tempfile
 from collections.abc import Callable
@@ -19,7 +22,8 @@ from pathlib import Path
 
 from ..errors import BackendError
 
-__all__ = ["numba_rhs", "cache_dir", "write_module", "import_module"]
+__all__ = ["numba_rhs", "cache_dir", "cache_key", "write_module", "atomic_write", "import_module",
+           "decorate", "purge_numba_cache"]
 
 _HEADER = "import math\nimport numpy as np\nimport numba\n\n\n"
 _DECORATOR = "@numba.njit(cache=True, error_model='python')\n"
@@ -41,19 +45,56 @@ def _require_numba(what: str):
     return numba
 
 
-def write_module(prefix: str, text: str) -> tuple[str, Path]:
-    """Write generated module ``text`` to the cache as ``<prefix>_<hash>.py`` (atomically: concurrent
-    writers never leave a truncated file) and return its import name and path. The hash covers the text
-    and the numba and Python versions, so a stale entry is never reused."""
+def cache_key(text: str) -> str:
+    """The cache key of a generated module: a SHA-256 over everything that affects the compiled code.
+
+    That is the module text itself (the model's generated source, its header and the numba decorator with
+    its options; parameter values are not baked in, they are passed as the array ``p`` at run time) and
+    the versions of lagrange, numba, NumPy and Python and the machine architecture. A new version of any
+    of them or a changed model gives a new key, so a stale entry is never used.
+    """
+    import numpy
+
     numba = _require_numba("compiled code")
-    key = hashlib.sha256((text + numba.__version__ + sys.version).encode()).hexdigest()[:24]
+    lagrange_version = getattr(sys.modules.get("lagrange"), "__version__", "unknown")
+    material = "\0".join([text, f"lagrange {lagrange_version}", f"numba {numba.__version__}",
+                           f"numpy {numpy.__version__}", f"python {sys.version}", platform.machine()])
+    return hashlib.sha256(material.encode()).hexdigest()[:24]
+
+
+def write_module(prefix: str, text: str) -> tuple[str, Path]:
+    """Write generated module ``text`` to the cache as ``<prefix>_<key>.py`` and return its import name and
+    path; ``key`` is :func:`cache_key`.
+
+    An existing entry is reused only when its bytes equal ``text`` (a corrupted or truncated file is
+    rewritten). Writes are atomic: the text goes to a temporary file in the same directory, is flushed to
+    disk, and replaces the entry with ``os.replace``, so processes building the same model at once never
+    see or leave a partial file.
+    """
+    key = cache_key(text)
     path = cache_dir() / f"{prefix}_{key}.py"
-    if not path.exists() or path.read_text() != text:
-        fd, tmp = tempfile.mkstemp(dir=path.parent, suffix=".tmp")
-        with os.fdopen(fd, "w") as fh:
-            fh.write(text)
-        os.replace(tmp, path)
+    try:
+        current = path.read_text(encoding="utf-8")
+    except (OSError, UnicodeDecodeError):
+        current = None
+    if current != text:
+        atomic_write(path, text)
     return f"lagrange_{prefix}_{key}", path
+
+
+def atomic_write(path: Path, text: str) -> None:
+    """Replace ``path`` by ``text`` atomically (temporary file in the same directory, fsync, ``os.replace``):
+    a reader sees the old or the new content, never a mix or a truncated file."""
+    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.stem}.", suffix=".tmp")
+    try:
+        with os.fdopen(fd, "w", encoding="utf-8") as fh:
+            fh.write(text)
+            fh.flush()
+            os.fsync(fh.fileno())
+        os.replace(tmp, path)
+    except BaseException:
+        Path(tmp).unlink(missing_ok=True)
+        raise
 
 
 def import_module(name: str, path: Path):
@@ -69,18 +110,39 @@ def import_module(name: str, path: Path):
     return module
 
 
+def decorate(source: str) -> str:
+    """Put ``@numba.njit(cache=True, error_model='python')`` above every top-level ``def`` of ``source`` that
+    has no decorator of its own (one compiled eagerly with an explicit signature keeps its own)."""
+    lines = source.splitlines(keepends=True)
+    return "".join(_DECORATOR + line if line.startswith("def ") and not (k and lines[k - 1].startswith("@"))
+                   else line for k, line in enumerate(lines))
+
+
 def numba_rhs(source: str) -> Callable:
+    """Compile generated ``source`` (one or more top-level functions, among them ``rhs(t, y, p)``) as a
+    cached module and return its ``rhs``; the module's other functions are reachable through
+    ``rhs.py_func.__globals__`` (compiled lazily, on first call)."""
     _require_numba("backend='numba' (or use backend='python')")
-    name, path = write_module("rhs", _HEADER + _DECORATOR + source)
+    name, path = write_module("rhs", _HEADER + decorate(source))
     try:
         return _load(name, path)
     except Exception:  # noqa: BLE001 - a stale or corrupted numba cache entry: purge it and rebuild once
-        for folder in (path.parent, path.parent / "__pycache__"):
-            for stale in folder.glob(f"{path.stem}.*"):
-                if stale.suffix in (".nbi", ".nbc"):
-                    stale.unlink(missing_ok=True)
-        sys.modules.pop(name, None)
-        return _load(name, path)
+        purge_numba_cache(name, path)
+        try:
+            return _load(name, path)
+        except Exception as exc:  # noqa: BLE001 - report a failure that survives the rebuild as one line
+            raise BackendError(f"compiling the generated module {path} with numba failed after purging its "
+                               f"cache: {type(exc).__name__}: {exc}") from exc
+
+
+def purge_numba_cache(name: str, path: Path) -> None:
+    """Delete numba's cache files (``.nbi``/``.nbc``, next to the module or in its ``__pycache__``) of the
+    generated module ``path`` and forget the imported module ``name``, so the next import recompiles."""
+    for folder in (path.parent, path.parent / "__pycache__"):
+        for stale in folder.glob(f"{path.stem}.*"):
+            if stale.suffix in (".nbi", ".nbc"):
+                stale.unlink(missing_ok=True)
+    sys.modules.pop(name, None)
 
 
 _SIGNATURE = "float64[::1](float64, float64[::1], float64[::1])"

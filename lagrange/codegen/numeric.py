@@ -20,7 +20,7 @@ from __future__ import annotations
 import importlib.util
 import math
 from collections.abc import Callable, Mapping
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from functools import cached_property
 
 import numpy as np
@@ -84,7 +84,8 @@ class NumericModel:
     equations : Equations
     params : ndarray, shape (k,) — values in the order of ``equations.parameters``
     backend : str
-    source : str — the generated source of ``rhs`` (empty for the reference backend)
+    source : str — the generated source of ``rhs`` (empty for the reference backend; with numba and no
+        constraints the whole module, including the ``field`` the compiled integrator loops call)
     dynamics : callable ``dynamics(t, y, p) -> [q̇, q̈, λ]`` (``[q̇, q̈]`` without constraints)
     rhs : callable ``rhs(t, y, p) -> [q̇, q̈]``, shape (2n,)
     """
@@ -119,6 +120,74 @@ class NumericModel:
             object.__setattr__(self, "rhs", rhs)
         else:
             object.__setattr__(self, "rhs", self.dynamics)
+
+    def __reduce__(self):
+        """Pickle by source: the equations, parameter values, backend and generated source travel, and the
+        compiled callables are rebuilt on unpickling (``exec`` of the source for ``python``, the on-disk
+        cache for ``numba``), so a model can be sent to worker processes or a Dask cluster."""
+        return (_rebuild_model, (self.equations, self.params, self.backend, self.source))
+
+    def with_params(self, params: Mapping) -> NumericModel:
+        """The same compiled code with some parameter values replaced (keys: symbols or names); cheap, no
+        code generation. Raises :class:`ParameterError` for unknown or non-finite values."""
+        current = {s.name: v for s, v in zip(self.equations.numeric_parameters, self.params)}
+        for key, value in params.items():
+            current[key.name if isinstance(key, sp.Symbol) else str(key)] = value
+        return replace(self, params=bind_parameters(self.equations, current))
+
+    def rhs_many(self, t, Y, P=None) -> np.ndarray:
+        """``dy/dt`` for many states (and parameter sets) at once, row by row.
+
+        Parameters
+        ----------
+        t : float or ndarray, shape (k,) — one time, or one time per row
+        Y : ndarray, shape (k, 2n) — states ``[q, q̇]`` in rows
+        P : None (the bound parameters for every row) or ndarray, shape (k, len(params))
+
+        Returns
+        -------
+        ndarray, shape (k, 2n): row i is ``rhs(t[i], Y[i], P[i])`` (λ dropped with constraints). The numba
+        backend runs the loop over rows compiled; the others loop in Python.
+
+        Raises
+        ------
+        ValueError
+            Shapes that do not match the model.
+        SingularMassMatrixError
+            A row at which the mass matrix is singular (the row's state is named).
+        """
+        Y, P, tt = self._many_arguments(t, Y, P)
+        n2 = 2 * self.n
+        if self.backend == "numba":
+            try:
+                return self._compiled_many(tt, Y, P)
+            except ZeroDivisionError:
+                pass  # find the row below, with the error naming its state
+        out = np.empty((Y.shape[0], n2))
+        rows = P.tolist() if self.backend == "python" else P
+        for i in range(Y.shape[0]):
+            try:
+                out[i] = self.dynamics(tt[i], Y[i], rows[i])[:n2]
+            except ZeroDivisionError:
+                raise replace(self, params=P[i]).singular_error(tt[i], Y[i]) from None
+        return out
+
+    def _many_arguments(self, t, Y, P):
+        Y = np.ascontiguousarray(Y, dtype=float)
+        k, width = Y.shape if Y.ndim == 2 else (0, -1)
+        if width != 2 * self.n:
+            raise ValueError(f"Y must have shape (k, {2 * self.n}) (rows [q, q_dot]), got {np.shape(Y)}")
+        P = np.broadcast_to(self.params, (k, len(self.params))) if P is None else np.asarray(P, dtype=float)
+        if P.shape != (k, len(self.params)):
+            raise ValueError(f"P must have shape ({k}, {len(self.params)}) (one parameter vector per row of Y, "
+                             f"in the order {', '.join(s.name for s in self.equations.numeric_parameters)}), "
+                             f"got {P.shape}")
+        tt = np.ascontiguousarray(np.broadcast_to(np.asarray(t, dtype=float), (k,)))
+        return Y, np.ascontiguousarray(P), tt
+
+    @cached_property
+    def _compiled_many(self) -> Callable:
+        return _numba_many(self.dynamics, 2 * self.n)
 
     def multipliers(self, t: float, y: np.ndarray) -> np.ndarray:
         """λ at ``(t, y)``, shape (m,): ``Aᵀλ`` is the generalized force of the constraints."""
@@ -301,6 +370,44 @@ def _python_rhs(source: str) -> Callable:
     return namespace["rhs"]
 
 
+_MANY = """import numpy as np
+import numba
+from {module} import rhs as _rhs
+
+
+@numba.njit(cache=True, error_model='python')
+def rhs_many(t, Y, P):
+    out = np.empty((Y.shape[0], {n2}))
+    for i in range(Y.shape[0]):
+        r = _rhs(t[i], Y[i], P[i])
+        for j in range({n2}):
+            out[i, j] = r[j]
+    return out
+"""
+
+
+def _numba_many(rhs: Callable, n2: int) -> Callable:
+    """A compiled loop over rows calling the compiled ``rhs`` (cached on disk next to it)."""
+    from .numba_backend import import_module, write_module
+
+    name, path = write_module("many", _MANY.format(module=rhs.py_func.__module__, n2=n2))
+    return import_module(name, path).rhs_many
+
+
+def _rebuild_model(eqs: Equations, params: np.ndarray, backend: str, source: str) -> NumericModel:
+    """A NumericModel from its generated source: the unpickling path of :meth:`NumericModel.__reduce__`."""
+    aux = _Lazy(lambda: _aux_function(eqs))
+    mass_forcing = _Lazy(lambda: _reference_functions(eqs)[1])
+    if backend == "reference":
+        ref_rhs, mass_forcing = _reference_functions(eqs)
+        return NumericModel(eqs, params, "reference", "", ref_rhs, aux, mass_forcing)
+    if backend == "python":
+        return NumericModel(eqs, params, "python", source, _python_rhs(source), aux, mass_forcing)
+    from .numba_backend import numba_rhs
+
+    return NumericModel(eqs, params, "numba", source, numba_rhs(source), aux, mass_forcing)
+
+
 def compile_equations(eqs: Equations, params: Mapping, *, backend: str = "python",
                       constraint_rhs=None) -> NumericModel:
     """Generate numeric code for ``eqs`` and bind ``params``.
@@ -331,5 +438,10 @@ def compile_equations(eqs: Equations, params: Mapping, *, backend: str = "python
         return NumericModel(eqs, p, "python", src, _python_rhs(src), aux, mass_forcing)
     from .numba_backend import numba_rhs
 
-    src = rhs_source(fused, n_params=len(p), flavour="numba")
+    if eqs.m:
+        src = rhs_source(fused, n_params=len(p), flavour="numba")
+    else:  # the module also holds `field`, called by the compiled integrator loops (lagrange.codegen.rk_source)
+        from .rk_source import field_module_source
+
+        src = field_module_source(eqs, fused, len(p))
     return NumericModel(eqs, p, "numba", src, numba_rhs(src), aux, mass_forcing)

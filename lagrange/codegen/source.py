@@ -37,9 +37,10 @@ def print_expr(expr) -> str:
     return _PRINTER.doprint(expr)
 
 
-def _ldl_factor(n: int, entry, tag: str, what: str) -> tuple[list[str], dict, list[str]]:
+def _ldl_factor(n: int, entry, tag: str, what: str, fail: str | None = None) -> tuple[list[str], dict, list[str]]:
     """Straight-line LDLᵀ of a symmetric matrix whose upper entries are named by ``entry(i, j)``
-    (None for a structural zero). Returns (lines, names of L's nonzeros, names of D)."""
+    (None for a structural zero). Returns (lines, names of L's nonzeros, names of D). A pivot that is not
+    positive runs ``fail`` (default: raise ZeroDivisionError)."""
     lines: list[str] = []
     nz: dict = {}
     d: list[str] = []
@@ -50,7 +51,7 @@ def _ldl_factor(n: int, entry, tag: str, what: str) -> tuple[list[str], dict, li
         terms = [f"{nz[(j, k)]}*{nz[(j, k)]}*{d[k]}" for k in range(j) if (j, k) in nz]
         lines.append(f"{tag}d{j} = {ajj}{''.join(f' - {x}' for x in terms)}")
         lines.append(f"if not ({tag}d{j} > 1e-13 * abs({ajj})):")
-        lines.append(f"    raise ZeroDivisionError('{what} is not positive definite')")
+        lines.append("    " + (fail or f"raise ZeroDivisionError('{what} is not positive definite')"))
         d.append(f"{tag}d{j}")
         for i in range(j + 1, n):
             aij = entry(min(i, j), max(i, j))
@@ -148,10 +149,15 @@ def rhs_source(fused: FusedExpressions, *, n_params: int, flavour: str = "python
     """Source text of ``rhs(t, y, p)``.
 
     ``flavour="python"`` unpacks ``y.tolist()`` (fast Python floats) and returns a list;
-    ``flavour="numba"`` indexes arrays and returns a new ``numpy`` array. With constraints the result is
-    ``[q̇, q̈, λ]`` (length 2n + m), without them ``[q̇, q̈]``.
+    ``flavour="numba"`` indexes arrays and returns a new ``numpy`` array; ``flavour="numba_status"``
+    (unconstrained systems only) is ``name(t, y, p, out) -> ok``, writing into ``out[:2n]`` without
+    allocating and returning False instead of raising on a mass matrix that is not positive definite (the
+    body of the numba module that the compiled integrator loops call, :mod:`lagrange.codegen.rk_source`).
+    With constraints the result is ``[q̇, q̈, λ]`` (length 2n + m), without them ``[q̇, q̈]``.
     """
     n = fused.n
+    if flavour == "numba_status" and fused.m:
+        raise ValueError("flavour='numba_status' is for unconstrained systems (no multipliers)")
     body: list[str] = []
     ys = [f"y{i}" for i in range(2 * n)]
     ps = [f"p{k}" for k in range(n_params)]
@@ -175,13 +181,16 @@ def rhs_source(fused: FusedExpressions, *, n_params: int, flavour: str = "python
         outs = ys[n:] + xs + lam
     else:
         lines, nz, d = _ldl_factor(n, lambda i, j: f"a{i}_{j}" if (i, j) in fused.mass_upper else None, "",
-                                   "mass matrix")
+                                   "mass matrix", "return False" if flavour == "numba_status" else None)
         body += lines
         xs = [f"x{i}" for i in range(n)]
         body += _ldl_solve(n, nz, d, [f"b{i}" for i in range(n)], xs, "")
         outs = ys[n:] + xs
     if flavour == "python":
         body.append(f"return [{', '.join(outs)}]")
+    elif flavour == "numba_status":
+        body += [f"out[{k}] = {v}" for k, v in enumerate(outs)] + ["return True"]
+        return f"def {name}(t, y, p, out):\n" + "\n".join("    " + line for line in body) + "\n"
     else:
         body.append(f"out = np.empty({len(outs)})")
         body += [f"out[{k}] = {v}" for k, v in enumerate(outs)]

@@ -9,8 +9,9 @@ Rules a scheme must follow:
    exactly (``energy_conserving``), and what structure it ``requires`` (``"separable"`` for explicit
    splitting methods); :meth:`check` verifies the requirement before a run.
 3. Implicit schemes solve their equations with Newton's method using the generated Hessian, to the
-   tolerance ``tol`` (relative), and raise :class:`~lagrange.errors.IntegrationError` with the time and
-   state when Newton fails — never return an unconverged step.
+   tolerance ``tol`` (relative), and raise :class:`~lagrange.errors.IntegrationError` (:class:`NewtonFailure`,
+   with the last residual) when Newton fails — never return an unconverged step. The driver
+   (:mod:`lagrange.integrate.fixed`) adds the step number, the state and the partial trajectory.
 4. The scheme's coefficients are data at the top of its file, with the reference.
 """
 
@@ -23,23 +24,49 @@ import numpy as np
 from ..errors import IntegrationError, LagrangeError
 from .hamiltonian_model import HamiltonianModel
 
-__all__ = ["Integrator", "newton"]
+__all__ = ["Integrator", "newton", "NewtonFailure"]
+
+
+class NewtonFailure(IntegrationError):
+    """Newton's method failed on a step's implicit equations; ``residual`` is the last residual norm (max
+    norm, inf when the iterate became non-finite) and ``iterations`` the iterations done."""
+
+    def __init__(self, message: str, *, residual: float, iterations: int, **kwargs):
+        self.residual = residual
+        self.iterations = iterations
+        super().__init__(message, **kwargs)
 
 
 def newton(residual, jacobian, x0, *, tol: float, max_iter: int, where: str):
     """Newton's method; returns (x, iterations). Converged when the step is at the round-off floor or
-    the residual is below ``tol`` relative to the size of x."""
+    the residual is below ``tol`` relative to the size of x.
+
+    Raises :class:`NewtonFailure` (an :class:`~lagrange.errors.IntegrationError`) with the last residual
+    when it does not converge in ``max_iter`` iterations, when an iterate or residual becomes non-finite,
+    or when the Jacobian is singular.
+    """
     x = np.array(x0, dtype=float)
+    rnorm = float("inf")
     for it in range(1, max_iter + 1):
         r = residual(x)
+        rnorm = float(np.max(np.abs(r)))
         scale = 1.0 + float(np.max(np.abs(x)))
-        if float(np.max(np.abs(r))) <= tol * scale:
+        if not (np.isfinite(rnorm) and np.isfinite(scale)):
+            raise NewtonFailure(f"Newton's method diverged {where}: non-finite residual at iteration {it}; "
+                                "reduce the step", residual=float("inf"), iterations=it)
+        if rnorm <= tol * scale:
             return x, it - 1
-        dx = np.linalg.solve(jacobian(x), r)
+        try:
+            dx = np.linalg.solve(jacobian(x), r)
+        except np.linalg.LinAlgError:
+            raise NewtonFailure(f"Newton's method failed {where}: singular Jacobian at iteration {it} "
+                                f"(residual {rnorm:.3g}); reduce the step", residual=rnorm, iterations=it) from None
         x -= dx
         if float(np.max(np.abs(dx))) <= 4e-16 * scale:
             return x, it
-    raise IntegrationError(f"Newton's method did not converge in {max_iter} iterations {where}; reduce the step")
+    raise NewtonFailure(f"Newton's method did not converge in {max_iter} iterations {where} (last residual "
+                        f"{rnorm:.3g}, tolerance {tol:.1g} relative); reduce the step", residual=rnorm,
+                        iterations=max_iter)
 
 
 class Integrator:
@@ -68,8 +95,11 @@ class Integrator:
         """One step of size ``h`` from ``(t, z)``; returns the new state and the Newton iterations used."""
         try:
             return self._step_impl(t, z, h)
+        except NewtonFailure as exc:
+            raise NewtonFailure(f"{self.name} step from t={t:.9g} with h={h:.3g}: {exc}", residual=exc.residual,
+                                iterations=exc.iterations, t=t) from None
         except IntegrationError as exc:
-            raise IntegrationError(f"{self.name} at t={t:.9g}: {exc}", t=t) from None
+            raise IntegrationError(f"{self.name} step from t={t:.9g} with h={h:.3g}: {exc}", t=t) from None
 
     def _step_impl(self, t: float, z: np.ndarray, h: float) -> tuple[np.ndarray, int]:  # pragma: no cover
         raise NotImplementedError

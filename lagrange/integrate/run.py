@@ -23,7 +23,7 @@ from ..results.trajectory import Trajectory
 from .constrained import STABILIZATIONS, Projector, baumgarte_rhs, consistent_initial
 from .rough import run_rough
 from .scipy_ivp import IMPLICIT_METHODS, SCIPY_METHODS, jacobian_function
-from .stepper import STEPPABLE, step_loop
+from .stepper import STEPPABLE, StepLog, recording, step_loop
 
 __all__ = ["simulate", "initial_state", "choose_method"]
 
@@ -118,17 +118,20 @@ def _state_text(model: NumericModel, y) -> str:
     return ", ".join(parts)
 
 
-def _collapse_error(model: NumericModel, res, t0: float, y0) -> IntegrationError:
-    """The step size collapsed: say when, where, and what usually causes it."""
+def _collapse_error(model: NumericModel, res, t0: float, y0, log: StepLog | None = None) -> IntegrationError:
+    """The step size collapsed: say when (the last accepted step, from ``log`` when given), where, and what
+    usually causes it."""
     n2 = 2 * model.n
     last_t = float(res.t[-1]) if len(res.t) else t0
     last_y = res.y[:n2, -1] if res.y.size else y0
+    if log is not None and log.last is not None:
+        last_t, last_y = log.last[0], log.last[1][:n2]
     return IntegrationError(
         f"integration stopped at t={last_t:.9g} ({_state_text(model, last_y)}): {res.message} The step size "
         "collapsed near this state: a singularity of the model (a coordinate reaching a division by zero), "
         "a blow-up, stiffness (try method='LSODA' or 'Radau'), or Euler angles passing through gimbal lock "
-        "(θ = 0 or π: use a Quaternion orientation). Results up to this time are lost; shorten "
-        "t_span or use a terminal event to stop before it.",
+        "(θ = 0 or π: use a Quaternion orientation). The trajectory up to this time is in the error's "
+        "`partial` attribute; shorten t_span or use a terminal event to stop before it.",
         t=last_t,
         state=dict(zip(model.equations.coordinates, last_y)),
     )
@@ -145,6 +148,16 @@ def _state_function(model: NumericModel, *, with_work: bool):
     dyn, pcall = model.dynamics, model._pcall
 
     def f(t_, z):
+        try:
+            return evaluate(t_, z)
+        except SingularMassMatrixError as exc:  # mid-run: keep where it happened
+            raise SingularMassMatrixError(str(exc), t=float(t_), state=dict(zip(eqs.coordinates, z))) from None
+        except LagrangeError:
+            raise
+        except (ValueError, OverflowError, ZeroDivisionError) as exc:
+            raise _model_fault(model, t_, z, exc) from None
+
+    def evaluate(t_, z):
         if power is None:
             out = fun(t_, z)
         else:
@@ -170,6 +183,48 @@ def _state_function(model: NumericModel, *, with_work: bool):
         return out
 
     return f
+
+
+_FAULT_CAUSES = (
+    (ValueError, "the model left its domain (a square root or logarithm of a negative number, or asin/acos "
+                 "beyond ±1): a coordinate passed a limit of the model, or a parameter is out of range"),
+    (OverflowError, "a value overflowed: a blow-up (the motion escapes to infinity in finite time) or a step "
+                    "too large for the model's growth"),
+    (ZeroDivisionError, "a division by zero in the model: a singular configuration (a coordinate reaching a "
+                        "singular value)"),
+)
+
+
+def _model_fault(model: NumericModel, t_: float, z, exc: Exception) -> IntegrationError:
+    """An arithmetic error raised while evaluating the model, as an IntegrationError with time, state and
+    the likely cause."""
+    cause = next(text for kind, text in _FAULT_CAUSES if isinstance(exc, kind))
+    return IntegrationError(
+        f"evaluating the model failed at t={t_:.9g} ({_state_text(model, z)}): {type(exc).__name__}: {exc}. "
+        f"Likely cause: {cause}.",
+        t=float(t_), state=dict(zip(model.equations.coordinates, z)),
+    )
+
+
+def _with_partial(exc: LagrangeError, model: NumericModel, log: StepLog, conservative: bool, t0: float, y0,
+                  method: str) -> LagrangeError:
+    """``exc`` (an IntegrationError or a mid-run SingularMassMatrixError) again, carrying ``partial``: the
+    trajectory up to the last accepted step, from ``log``; ``t``/``state`` default to where that ended."""
+    n2 = 2 * model.n
+    T, Z = log.arrays()
+    partial = None
+    if len(T):
+        partial = Trajectory(t=T, y=Z[:, :n2].copy(), model=model, method=f"{method} (stopped early)",
+                             success=False, message=str(exc), nfev=log.steps,
+                             work=None if conservative else Z[:, n2].copy(), initial=(t0, np.array(y0).copy()))
+    t_fault = exc.t if getattr(exc, "t", None) is not None else (float(T[-1]) if len(T) else t0)
+    state = exc.state if getattr(exc, "state", None) is not None else (
+        dict(zip(model.equations.coordinates, Z[-1, :n2])) if len(T) else None)
+    note = (f" The trajectory up to t={T[-1]:.9g} ({len(T)} points) is in the error's `partial` attribute."
+            if partial is not None and "`partial`" not in str(exc) else "")
+    out = type(exc)(str(exc) + note, t=t_fault, state=state, partial=partial)
+    out.__cause__ = exc.__cause__
+    return out
 
 
 def _jacobian(model: NumericModel, method: str, conservative: bool):
@@ -268,6 +323,7 @@ def simulate(
     baumgarte: tuple = (10.0, 10.0),
     project_initial: bool = True,
     step: float | None = None,
+    loop: str = "auto",
 ) -> Trajectory:
     """Integrate Lagrange's equations of ``system``.
 
@@ -295,6 +351,11 @@ def simulate(
         see :mod:`lagrange.integrate.constrained`
     baumgarte : (α, β) in 1/time for Baumgarte stabilization
     project_initial : project an inconsistent initial state onto the constraints (default) or raise
+    loop : ``"auto"`` (default), ``"compiled"`` or ``"scipy"`` — who runs the steps of DOP853/RK45:
+        the compiled numba loop (no Python per step; implies ``backend="numba"``) or ``solve_ivp``;
+        ``"auto"`` uses the compiled loop for numba models without events, constraints or friction
+        switches. See :mod:`lagrange.integrate.compiled`; the ``method`` label of the result says which
+        loop ran (``"DOP853 (compiled loop)"``) and, for numba models run by scipy, why.
 
     Returns
     -------
@@ -305,9 +366,14 @@ def simulate(
     InitialConditionError, ParameterError
         Missing or bad inputs (all listed).
     SingularMassMatrixError
-        The mass matrix is singular at the initial state (the coordinates involved are named).
+        The mass matrix is singular at the initial state, or becomes singular during the run (the
+        coordinates involved are named; during a run also ``t``, ``state`` and ``partial``).
     IntegrationError
-        A non-finite value appeared (time and state reported) or scipy failed.
+        A numerical fault during the run: a non-finite value, a math domain error (sqrt of a negative
+        number), an overflow (blow-up), a collapsed step size, or a failed Newton solve of a fixed-step
+        method. The message gives the time, the state and the likely cause; ``t`` and ``state`` say where
+        it stopped and ``partial`` is the Trajectory computed up to there (its last point is the last
+        accepted step).
     """
     from .switching import run_switched, switching_functions
 
@@ -348,6 +414,13 @@ def simulate(
         stabilization = "baumgarte"
         notes.append(f"{method} keeps a step history, so constraint drift is controlled by Baumgarte "
                      "stabilization instead of projection")
+    from .compiled import choose_loop, integrate_compiled
+
+    use_compiled, loop_note = choose_loop(loop, backend=backend, model=model, eqs=eqs, method=method,
+                                          events=events, switches=switches)
+    if use_compiled and model is None:
+        backend = "numba"
+    notes += [loop_note] if loop_note else []
     crhs = baumgarte_rhs(eqs, *baumgarte) if eqs.m and stabilization == "baumgarte" else None
     if model is None or model.equations is not eqs or crhs is not None:
         p = params if model is None else dict(zip(eqs.numeric_parameters, model.params))
@@ -367,7 +440,14 @@ def simulate(
     z0 = y0 if conservative else np.append(y0, 0.0)
     jac = _jacobian(model, method, conservative)
     all_events = list(events or []) + _contact_events(model)
-    kwargs = dict(method=method, rtol=rtol, atol=atol, max_step=max_step)
+    if use_compiled:  # its IntegrationError already carries `partial` (lagrange.integrate.compiled)
+        try:
+            return integrate_compiled(model, method, (t0, t1), y0, t_eval, rtol=rtol, atol=atol, max_step=max_step,
+                                      label=f"{method} ({'; '.join(notes)})")
+        except ValueError as exc:  # bad t_eval or tolerances, worded as scipy words them
+            raise IntegrationError(f"integration failed: {exc}") from exc
+    log = StepLog(t_eval)
+    kwargs = dict(method=recording(method, log), rtol=rtol, atol=atol, max_step=max_step)
     if jac is not None:
         kwargs["jac"] = jac
     try:
@@ -382,12 +462,19 @@ def simulate(
             res = step_loop(f, (t0, t1), z0, t_eval=t_eval, events=all_events, post_step=proj, **kwargs)
         else:
             res = solve_ivp(f, (t0, t1), z0, t_eval=t_eval, events=all_events or None, **kwargs)
+    except (IntegrationError, SingularMassMatrixError) as exc:  # a numerical fault mid-run: keep the results
+        raise _with_partial(exc, model, log, conservative, t0, y0, method) from None
     except LagrangeError:
         raise
     except (ValueError, ZeroDivisionError, OverflowError, np.linalg.LinAlgError) as exc:
-        raise IntegrationError(f"integration failed: {exc}") from exc
+        t_last, z_last = log.last if log.last is not None else (t0, z0)
+        cause = next((f" Likely cause: {text}." for kind, text in _FAULT_CAUSES if isinstance(exc, kind)), "")
+        fault = IntegrationError(f"integration failed after t={t_last:.9g} ({_state_text(model, z_last)}): "
+                                 f"{type(exc).__name__}: {exc}.{cause}")
+        fault.__cause__ = exc
+        raise _with_partial(fault, model, log, conservative, t0, y0, method) from exc
     if res.status == -1:
-        raise _collapse_error(model, res, t0, y0)
+        raise _with_partial(_collapse_error(model, res, t0, y0, log), model, log, conservative, t0, y0, method)
     Y = res.y.T
     if eqs.m:
         notes.append(f"constraints: {stabilization}")

@@ -9,6 +9,15 @@ an object shaped like ``solve_ivp``'s result.
 
 Only one-step methods can continue from a modified state: RK23, RK45, DOP853 and Radau (their last
 derivative is refreshed after the hook). BDF and LSODA keep a history and are not allowed here.
+
+Partial results
+---------------
+:func:`recording` wraps any scipy ``OdeSolver`` class so that every accepted step is logged in a
+:class:`StepLog`: the states at the requested output times (from the step's dense output) and the last
+accepted state. When a run fails — an exception from the right-hand side (a singular mass matrix, a
+non-finite value, a math domain error) or a collapsed step size — the log still holds everything computed
+up to the last accepted step, which :mod:`lagrange.integrate.run` returns as the ``partial`` trajectory of
+the error. Both ``solve_ivp`` (which accepts a solver class as ``method``) and :func:`step_loop` use it.
 """
 
 from __future__ import annotations
@@ -16,10 +25,10 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 import numpy as np
-from scipy.integrate import DOP853, RK23, RK45, Radau
+from scipy.integrate import BDF, DOP853, LSODA, RK23, RK45, OdeSolver, Radau
 from scipy.optimize import brentq
 
-__all__ = ["step_loop", "STEPPABLE", "StepResult"]
+__all__ = ["step_loop", "STEPPABLE", "StepResult", "StepLog", "recording"]
 
 STEPPABLE = {"RK23": RK23, "RK45": RK45, "DOP853": DOP853, "Radau": Radau}
 
@@ -36,6 +45,96 @@ class StepResult:
     y_events: list = field(default_factory=list)
 
 
+SOLVERS = {**STEPPABLE, "LSODA": LSODA, "BDF": BDF}
+
+
+class StepLog:
+    """What a run has computed so far: states at the output times ``t_eval`` reached by accepted steps,
+    and the last accepted ``(t, y)``.
+
+    ``t_eval`` must be ordered in the direction of integration (as ``solve_ivp`` requires).
+    """
+
+    def __init__(self, t_eval):
+        self.t_eval = np.asarray(t_eval, dtype=float)
+        self.t: list[float] = []
+        self.y: list[np.ndarray] = []
+        self.last: tuple[float, np.ndarray] | None = None
+        self.steps = 0
+        self._k = 0
+
+    def start(self, t0: float, y0: np.ndarray, direction: float) -> None:
+        self._dir = direction if direction != 0 else 1.0
+        self.last = (float(t0), np.array(y0, dtype=float))
+        while self._k < len(self.t_eval) and (self.t_eval[self._k] - t0) * self._dir <= 0:
+            if self.t_eval[self._k] == t0 and not self.t:
+                self.t.append(float(t0))
+                self.y.append(np.array(y0, dtype=float))
+            self._k += 1
+
+    def accept(self, solver: OdeSolver) -> None:
+        """Log the step just accepted by ``solver`` (from ``solver.t_old`` to ``solver.t``)."""
+        t_new = solver.t
+        self.steps += 1
+        dense = None
+        while self._k < len(self.t_eval) and (self.t_eval[self._k] - t_new) * self._dir <= 0:
+            te = self.t_eval[self._k]
+            if te == t_new:
+                self.y.append(np.array(solver.y, dtype=float))
+            else:
+                dense = dense or solver.dense_output()
+                self.y.append(np.asarray(dense(te), dtype=float))
+            self.t.append(float(te))
+            self._k += 1
+        self.last = (float(t_new), np.array(solver.y, dtype=float))
+
+    def arrays(self) -> tuple[np.ndarray, np.ndarray]:
+        """``(t, Y)`` with Y of shape (m, n_state): the output times reached, then the last accepted state
+        when it lies beyond them (the time where the run stopped)."""
+        ts, ys = list(self.t), list(self.y)
+        if self.last is not None and (not ts or (self.last[0] - ts[-1]) * self._dir > 0):
+            ts.append(self.last[0])
+            ys.append(self.last[1])
+        n = len(self.last[1]) if self.last is not None else 0
+        return np.array(ts, dtype=float), np.array(ys, dtype=float).reshape(len(ts), n)
+
+
+def recording(method: str | type, log: StepLog) -> type:
+    """A subclass of the scipy solver ``method`` (name or class) that logs every accepted step in ``log``."""
+    base = SOLVERS[method] if isinstance(method, str) else method
+
+    class Recording(base):
+        def __init__(self, fun, t0, y0, t_bound, **kwargs):
+            super().__init__(fun, t0, y0, t_bound, **kwargs)
+            log.start(t0, self.y, np.sign(t_bound - t0))
+
+        def step(self):
+            message = super().step()
+            if self.status != "failed":
+                log.accept(self)
+            return message
+
+        def dense_output(self):
+            # one interpolant per step, shared by the log and solve_ivp (DOP853's costs 3 evaluations)
+            if getattr(self, "_dense_at", None) != (self.t_old, self.t):
+                self._dense_at, self._dense = (self.t_old, self.t), super().dense_output()
+            return self._dense
+
+    Recording.__name__ = Recording.__qualname__ = f"Recording{base.__name__}"
+    return Recording
+
+
+def _solver_class(method: str | type) -> type:
+    if isinstance(method, str):
+        if method not in STEPPABLE:
+            raise ValueError(f"method {method!r} cannot continue from a projected state; use one of "
+                             f"{sorted(STEPPABLE)}")
+        return STEPPABLE[method]
+    if not (isinstance(method, type) and issubclass(method, tuple(STEPPABLE.values()))):
+        raise ValueError(f"method {method!r} cannot continue from a projected state; use one of {sorted(STEPPABLE)}")
+    return method
+
+
 def _event_sign_change(g0: float, g1: float, direction: float) -> bool:
     """A zero crossing from g0 to g1 in the requested direction; a start exactly on zero is not one."""
     if g0 == 0 or g0 == g1 or (np.sign(g0) == np.sign(g1) and g1 != 0):
@@ -46,14 +145,17 @@ def _event_sign_change(g0: float, g1: float, direction: float) -> bool:
 
 def step_loop(fun, t_span, y0, *, method: str, t_eval, events=None, post_step=None, rtol=1e-9, atol=1e-11,
               max_step=np.inf, jac=None) -> StepResult:
-    """Integrate ``y' = fun(t, y)`` step by step; ``post_step(t, y) -> y`` may modify each accepted state."""
-    if method not in STEPPABLE:
-        raise ValueError(f"method {method!r} cannot continue from a projected state; use one of {sorted(STEPPABLE)}")
+    """Integrate ``y' = fun(t, y)`` step by step; ``post_step(t, y) -> y`` may modify each accepted state.
+
+    ``method`` is a name in :data:`STEPPABLE` or a subclass of one of those solvers (e.g. from
+    :func:`recording`).
+    """
+    cls = _solver_class(method)
     t0, t1 = t_span
     kwargs = dict(rtol=rtol, atol=atol, max_step=max_step)
-    if jac is not None and method == "Radau":
+    if jac is not None and issubclass(cls, Radau):
         kwargs["jac"] = jac
-    solver = STEPPABLE[method](fun, t0, np.array(y0, dtype=float), t1, **kwargs)
+    solver = cls(fun, t0, np.array(y0, dtype=float), t1, **kwargs)
     events = list(events or [])
     g_old = [float(ev(t0, solver.y)) for ev in events]
     t_events = [[] for _ in events]

@@ -101,11 +101,18 @@ def run_switched(model, switches, t_span, z0, t_eval, events, kwargs, with_work)
     K = len(switches)
     ren = rename_map(eqs)
     tt, ys, ps = numeric_arguments(eqs)  # switched eqs carry the σ's among their parameters
-    u_fn = sp.lambdify((tt, ys), [u.xreplace(ren) for u in switches], modules="math")
-    grads = [
-        sp.lambdify((tt, ys), [sp.diff(u, s).xreplace(ren) for s in (*eqs.q, *eqs.qd, t)], modules="math")
+    # switching functions may contain parameters (a belt speed): evaluated with the σ-free parameter values
+    p_u = np.concatenate([model.params, np.ones(K)])
+    u_raw = sp.lambdify((tt, ys, ps), [u.xreplace(ren) for u in switches], modules="math")
+    grads_raw = [
+        sp.lambdify((tt, ys, ps), [sp.diff(u, s).xreplace(ren) for s in (*eqs.q, *eqs.qd, t)], modules="math")
         for u in switches
     ]
+
+    def u_fn(t_, y):
+        return u_raw(t_, y, p_u)
+
+    grads = [lambda t_, y, _g=g: _g(t_, y, p_u) for g in grads_raw]
     pw = None
     if with_work:
         pw = sp.lambdify((tt, ys, ps, list(eqs.multipliers)), eqs.jacobi_rate.xreplace(ren), modules="math",
@@ -154,6 +161,7 @@ def run_switched(model, switches, t_span, z0, t_eval, events, kwargs, with_work)
         for k in range(K):
             if abs(u[k]) > tiny:
                 sigma[k], sliding[k] = math.copysign(1.0, u[k]), False
+                p[nparam + k] = sigma[k]
                 continue
             p[nparam + k] = 1.0
             gp = g_of(k, t_cur, y, p)
@@ -216,7 +224,8 @@ def run_switched(model, switches, t_span, z0, t_eval, events, kwargs, with_work)
             from .run import _collapse_error
 
             raise _collapse_error(sw_model, res, t_cur, z_cur[:n2])
-        for ti, zi in zip(res.t, res.y.T):
+        ys = np.asarray(res.y, dtype=float).reshape(len(z_cur), len(res.t))  # [] when no t_eval point inside
+        for ti, zi in zip(res.t, ys.T):
             out_t.append(ti)
             out_z.append(zi)
             out_sig.append(params_at(ti, zi[:n2])[nparam:].copy())

@@ -21,6 +21,7 @@ from typing import Protocol, runtime_checkable
 import sympy as sp
 
 from ..conventions import t
+from ..errors import DeclarationError
 
 __all__ = ["Body", "Particle", "Force", "as_vector"]
 
@@ -34,7 +35,7 @@ def as_vector(components, what: str) -> sp.Matrix:
     else:
         comps = [components]
     if not 1 <= len(comps) <= 3:
-        raise ValueError(f"{what} needs 1 to 3 components (x, y, z), got {len(comps)}")
+        raise DeclarationError(f"{what} needs 1 to 3 components (x, y, z), got {len(comps)}")
     comps = [sp.sympify(c) for c in comps] + [sp.S.Zero] * (3 - len(comps))
     return sp.Matrix(comps)
 

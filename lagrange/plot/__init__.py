@@ -2,5 +2,6 @@
 
 from .animate import animate, animation_html, scene_points
 from .trajectory import plot_trajectory
+from .workprecision import plot_work_precision
 
-__all__ = ["plot_trajectory", "animate", "animation_html", "scene_points"]
+__all__ = ["plot_trajectory", "animate", "animation_html", "scene_points", "plot_work_precision"]

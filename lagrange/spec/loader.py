@@ -26,7 +26,12 @@ TOML spec format
     t_end = 10
 
 Velocities are written ``<coordinate>_dot``. Expressions go through
-:func:`lagrange.spec.expressions.parse_expression`: a TOML spec never executes code.
+:func:`lagrange.spec.expressions.parse_expression`: a TOML spec never executes code. Every other value is
+checked too: names must be ASCII identifiers that are not Python keywords and do not clash (a parameter
+``x_dot`` next to a coordinate ``x``); ``[params]`` and ``[initial]`` take finite numbers or constant
+expressions (``"pi/4"``) for declared names only; ``[simulate]`` takes ``t_end`` and the data options of
+:func:`~lagrange.integrate.run.simulate`. Any violation is a :class:`~lagrange.errors.SpecError` naming the
+file and the key.
 
 A Python spec is a file that defines ``system`` (a :class:`~lagrange.System`) and optionally
 ``params``, ``initial`` and ``t_end`` — or ``PROBLEM``. **It is executed as Python code**: load only
@@ -35,6 +40,8 @@ files you trust.
 
 from __future__ import annotations
 
+import keyword
+import math
 import runpy
 import tomllib
 from dataclasses import dataclass, field
@@ -46,12 +53,19 @@ from ..model.bodies import Particle
 from ..model.coordinates import coordinates as make_coordinates
 from ..model.coordinates import parameters as make_parameters
 from ..model.system import System
-from .expressions import parse_expression
+from .expressions import MAX_TERMS, parse_expression
 
 __all__ = ["LoadedSpec", "load_spec", "load_toml"]
 
 _TOML_KEYS = {"name", "description", "coordinates", "parameters", "T", "V", "P", "rayleigh", "forces",
               "particles", "params", "initial", "simulate"}
+_PARTICLE_KEYS = {"mass", "position", "name"}
+#: ``[simulate]`` keys: ``t_end`` and the keyword options of :func:`lagrange.integrate.run.simulate` that are data
+_SIMULATE_KEYS = {"t_end", "method", "rtol", "atol", "n_points", "max_step", "backend", "friction",
+                  "friction_epsilon", "stabilization", "baumgarte", "project_initial", "step", "loop"}
+#: particle positions are squared in T, so they get a tighter limit on their multiplied-out size
+_POSITION_TERMS = 100
+MAX_SPEC_BYTES = 1_000_000
 
 
 @dataclass(frozen=True)
@@ -65,60 +79,163 @@ class LoadedSpec:
     problem: object | None = None
 
 
-def load_toml(path: Path) -> LoadedSpec:
+def _names_list(data: dict, key: str, path: Path, *, required: bool) -> list[str]:
+    value = data.get(key, [])
+    if required and not value:
+        raise SpecError(f"{path}: '{key}' must be a non-empty list of names")
+    if not isinstance(value, list) or not all(isinstance(v, str) for v in value):
+        raise SpecError(f"{path}: '{key}' must be a list of name strings, got {value!r}")
+    for nm in value:
+        if not nm.isascii() or not nm.isidentifier() or nm.startswith("_"):
+            raise SpecError(f"{path}: {nm!r} in '{key}' is not a valid name (ASCII letters, digits and _, "
+                            "not starting with _ or a digit)")
+        if keyword.iskeyword(nm):
+            raise SpecError(f"{path}: {nm!r} in '{key}' is a Python keyword and cannot appear in expressions; "
+                            f"rename it (e.g. {nm + '_'!r})")
+    dups = sorted({nm for nm in value if value.count(nm) > 1})
+    if dups:
+        raise SpecError(f"{path}: {', '.join(dups)} listed more than once in '{key}'")
+    return value
+
+
+def _namespace(coord_names: list[str], param_names: list[str], path: Path) -> tuple[dict, tuple, tuple]:
+    """The names an expression may use: t, each coordinate, its ``_dot`` velocity and the parameters."""
+    coords = make_coordinates(coord_names)
+    coords = coords if isinstance(coords, tuple) else (coords,)
+    params = make_parameters(param_names) if param_names else ()
+    params = params if isinstance(params, tuple) else (params,)
+    names: dict = {"t": t}
+    entries = [(q.func.__name__, q, "coordinate") for q in coords]
+    entries += [(q.func.__name__ + VELOCITY_SUFFIX, q.diff(t), "velocity") for q in coords]
+    entries += [(p.name, p, "parameter") for p in params]
+    kinds = {"t": "time"}
+    for nm, obj, kind in entries:
+        if nm in names:
+            raise SpecError(f"{path}: the {kind} name {nm!r} clashes with the {kinds[nm]} {nm!r}; rename one")
+        names[nm], kinds[nm] = obj, kind
+    return names, coords, params
+
+
+def _number(value, where: str) -> float:
+    """A finite real number from a TOML number or a constant expression string (``"pi/4"``)."""
+    if isinstance(value, bool) or not isinstance(value, (int, float, str)):
+        raise SpecError(f"{where}: expected a number, got {type(value).__name__} {value!r}")
+    if isinstance(value, str):
+        value = parse_expression(value, {}, where=where)
+        if not value.is_number:
+            raise SpecError(f"{where}: {value} is not a constant")
     try:
-        data = tomllib.loads(path.read_text())
+        v = float(value)
+    except (TypeError, ValueError, OverflowError):
+        raise SpecError(f"{where}: {value!r} is not a real number") from None
+    if not math.isfinite(v):
+        raise SpecError(f"{where}: {value!r} is not a finite number")
+    return v
+
+
+def _table(data: dict, key: str, path: Path) -> dict:
+    value = data.get(key, {})
+    if not isinstance(value, dict):
+        raise SpecError(f"{path}: [{key}] must be a table, got {type(value).__name__}")
+    return value
+
+
+def _values(data: dict, key: str, allowed: dict, path: Path) -> dict:
+    """``[params]`` / ``[initial]``: every key a known name, every value a finite number."""
+    table = _table(data, key, path)
+    unknown = sorted(set(table) - set(allowed))
+    if unknown:
+        raise SpecError(f"{path}: [{key}] has unknown name(s) {', '.join(unknown)} (expected: "
+                        f"{', '.join(allowed) or 'none'})")
+    return {k: _number(v, f"{path.name}: {key}.{k}") for k, v in table.items()}
+
+
+def _particles(data: dict, expr, path: Path) -> list:
+    raw = data.get("particles", [])
+    if not isinstance(raw, list):
+        raise SpecError(f"{path}: 'particles' must be an array of tables ([[particles]])")
+    out = []
+    for i, part in enumerate(raw):
+        if not isinstance(part, dict) or "mass" not in part or "position" not in part:
+            raise SpecError(f"{path}: particles[{i}] needs 'mass' and 'position'")
+        extra = sorted(set(part) - _PARTICLE_KEYS)
+        if extra:
+            raise SpecError(f"{path}: particles[{i}] has unknown key(s) {', '.join(extra)} (allowed: mass, "
+                            "position, name)")
+        pos = part["position"]
+        if not isinstance(pos, list) or not 1 <= len(pos) <= 3:
+            raise SpecError(f"{path}: particles[{i}].position must be a list of 1 to 3 expressions, got {pos!r}")
+        name = part.get("name", "")
+        if not isinstance(name, str):
+            raise SpecError(f"{path}: particles[{i}].name must be a string")
+        coords = [expr(f"particles[{i}].position[{j}]", c, _POSITION_TERMS) for j, c in enumerate(pos)]
+        out.append(Particle(expr(f"particles[{i}].mass", part["mass"], _POSITION_TERMS), coords, name=name))
+    return out
+
+
+def _simulate_table(data: dict, path: Path) -> tuple[float | None, dict]:
+    sim = _table(data, "simulate", path)
+    unknown = sorted(set(sim) - _SIMULATE_KEYS)
+    if unknown:
+        raise SpecError(f"{path}: [simulate] has unknown key(s) {', '.join(unknown)} (allowed: "
+                        f"{', '.join(sorted(_SIMULATE_KEYS))})")
+    t_end = sim.get("t_end")
+    if t_end is not None:
+        t_end = _number(t_end, f"{path.name}: simulate.t_end")
+        if t_end <= 0:
+            raise SpecError(f"{path}: simulate.t_end must be positive, got {t_end}")
+    return t_end, {k: v for k, v in sim.items() if k != "t_end"}
+
+
+def load_toml(path: Path) -> LoadedSpec:
+    """Load a TOML spec (data only: no code runs, every value is validated).
+
+    Raises
+    ------
+    SpecError
+        Naming the file, the key and what is wrong: invalid TOML, unknown keys, names that are not
+        identifiers or clash, expressions the safe parser rejects, non-finite numbers, or an invalid system.
+    """
+    try:
+        if path.stat().st_size > MAX_SPEC_BYTES:
+            raise SpecError(f"{path}: larger than {MAX_SPEC_BYTES} bytes; a spec is a short text file")
+        data = tomllib.loads(path.read_text(encoding="utf-8"))
     except (tomllib.TOMLDecodeError, UnicodeDecodeError) as exc:
         raise SpecError(f"{path}: not valid TOML: {exc}") from None
+    except OSError as exc:
+        raise SpecError(f"{path}: cannot read: {exc}") from None
     unknown = sorted(set(data) - _TOML_KEYS)
     if unknown:
         raise SpecError(f"{path}: unknown key(s) {', '.join(unknown)} (allowed: {', '.join(sorted(_TOML_KEYS))})")
-    coord_names = data.get("coordinates")
-    if not coord_names or not isinstance(coord_names, list) or not all(isinstance(c, str) for c in coord_names):
-        raise SpecError(f"{path}: 'coordinates' must be a non-empty list of names")
-    for nm in coord_names + list(data.get("parameters", [])):
-        if not isinstance(nm, str) or not nm.isidentifier() or nm.startswith("_"):
-            raise SpecError(f"{path}: {nm!r} is not a valid coordinate or parameter name")
-    coords = make_coordinates(coord_names)
-    coords = coords if isinstance(coords, tuple) else (coords,)
-    pnames = data.get("parameters", [])
-    params = make_parameters(pnames) if pnames else ()
-    params = params if isinstance(params, tuple) else (params,)
-    names = {"t": t}
-    for q in coords:
-        names[q.func.__name__] = q
-        names[q.func.__name__ + VELOCITY_SUFFIX] = q.diff(t)
-    for p in params:
-        if p.name in names:
-            raise SpecError(f"{path}: parameter {p.name!r} clashes with a coordinate or velocity name")
-        names[p.name] = p
+    for key in ("name", "description"):
+        if not isinstance(data.get(key, ""), str):
+            raise SpecError(f"{path}: '{key}' must be a string")
+    coord_names = _names_list(data, "coordinates", path, required=True)
+    names, coords, params = _namespace(coord_names, _names_list(data, "parameters", path, required=False), path)
 
-    def expr(key, value):
-        return parse_expression(value, names, where=f"{path.name}: {key}")
+    def expr(key, value, max_terms=MAX_TERMS):
+        return parse_expression(value, names, where=f"{path.name}: {key}", max_terms=max_terms)
 
-    particles = []
-    for i, part in enumerate(data.get("particles", [])):
-        if not isinstance(part, dict) or "mass" not in part or "position" not in part:
-            raise SpecError(f"{path}: particles[{i}] needs 'mass' and 'position'")
-        pos = [expr(f"particles[{i}].position", c) for c in part["position"]]
-        particles.append(Particle(expr(f"particles[{i}].mass", part["mass"]), pos, name=part.get("name", "")))
+    particles = _particles(data, expr, path)
     forces = None
     if "forces" in data:
-        if not isinstance(data["forces"], dict):
-            raise SpecError(f"{path}: [forces] must map coordinate names to expressions")
-        forces = {k: expr(f"forces.{k}", v) for k, v in data["forces"].items()}
-    kwargs = {}
-    for key in ("T", "V", "P", "rayleigh"):
-        if key in data:
-            kwargs[key] = expr(key, data[key])
+        table = _table(data, "forces", path)
+        bad = sorted(set(table) - set(coord_names))
+        if bad:
+            raise SpecError(f"{path}: [forces] has {', '.join(bad)}, which are not coordinates "
+                            f"({', '.join(coord_names)})")
+        forces = {k: expr(f"forces.{k}", v) for k, v in table.items()}
+    kwargs = {key: expr(key, data[key]) for key in ("T", "V", "P", "rayleigh") if key in data}
     try:
         system = System(list(coords), bodies=particles, forces=forces, name=data.get("name", path.stem),
                         parameters=list(params), description=data.get("description", ""), **kwargs)
     except LagrangeError as exc:
         raise SpecError(f"{path}: {exc}") from None
-    sim = data.get("simulate", {})
-    return LoadedSpec(system, dict(data.get("params", {})), dict(data.get("initial", {})),
-                      sim.get("t_end"), {k: v for k, v in sim.items() if k != "t_end"}, str(path))
+    state_names = {**{nm: None for nm in coord_names}, **{nm + VELOCITY_SUFFIX: None for nm in coord_names}}
+    values = _values(data, "params", {p.name: None for p in params}, path)
+    initial = _values(data, "initial", state_names, path)
+    t_end, options = _simulate_table(data, path)
+    return LoadedSpec(system, values, initial, t_end, options, str(path))
 
 
 def _load_python(path: Path) -> LoadedSpec:

@@ -1,0 +1,131 @@
+"""Time to first result: derivation + code generation/compilation + one integration, cold.
+
+Each route runs in a fresh Python process (after its imports) with empty lagrange and numba caches
+(``LAGRANGE_CACHE_DIR`` and ``NUMBA_CACHE_DIR`` point to a new temporary directory), so JIT and LLVM
+compilation are paid as a new user pays them. heyoka's "derive" is ``heyoka.lagrangian`` on the T − V that
+lagrange formed (forming it is not counted, which favours heyoka).
+
+Run one route by hand: ``python -m lagrange.bench.first_result '{"problem": "kepler", "route": "python"}'``.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+import sys
+import tempfile
+import time
+from dataclasses import dataclass
+
+import numpy as np
+
+__all__ = ["ROUTES", "FirstResult", "first_result", "routes_for"]
+
+#: route → label
+ROUTES = {
+    "python": "lagrange, python backend, DOP853",
+    "numba": "lagrange, numba backend (cold JIT), DOP853, scipy loop",
+    "compiled": "lagrange, numba compiled loop (cold JIT), DOP853",
+    "sympy": "plain sympy.physics.mechanics + lambdify(cse) + solve_ivp DOP853",
+    "heyoka": "heyoka.py (lagrangian + taylor_adaptive, cold LLVM compile)",
+    "heyoka_default": "heyoka.py, default mode (cold LLVM compile)",
+}
+
+
+@dataclass(frozen=True)
+class FirstResult:
+    """Seconds spent deriving, compiling and integrating (None when the route failed: see ``note``)."""
+
+    route: str
+    derive: float | None
+    compile: float | None
+    integrate: float | None
+    error: float | None
+    note: str = ""
+
+    @property
+    def total(self) -> float | None:
+        if self.derive is None:
+            return None
+        return self.derive + self.compile + self.integrate
+
+
+def routes_for(problem, *, heyoka: bool) -> list[str]:
+    """The routes that apply to ``problem`` (numba ones only when numba is installed)."""
+    import importlib.util
+
+    out = ["python"]
+    if importlib.util.find_spec("numba") is not None:
+        out += ["numba"] + (["compiled"] if problem.name != "stick_slip" else [])  # no friction switches there
+    if problem.pendulum_links:
+        out.append("sympy")
+    if heyoka and problem.name != "stick_slip":
+        out.append("heyoka")
+    return out
+
+
+def _child(problem_name: str, route: str, tol: float, quick: bool) -> dict:
+    from .problems import get_problem
+    from .runner import initial_vector
+
+    p = get_problem(problem_name, quick=quick)
+    times = p.times()
+    if route == "sympy":
+        from scipy.integrate import solve_ivp
+
+        from .sympy_route import plain_pendulum_route
+
+        d, c, rhs = plain_pendulum_route(p.pendulum_links, float(p.params["g"]))
+        y0 = initial_vector(p, p.build())
+        t0 = time.perf_counter()
+        Y = solve_ivp(rhs, (0.0, p.t_end), y0, method="DOP853", rtol=tol, atol=tol * p.atol_scale, t_eval=times).y.T
+        return dict(derive=d, compile=c, integrate=time.perf_counter() - t0, states=Y.tolist())
+    t0 = time.perf_counter()
+    system = p.build()
+    derive = time.perf_counter() - t0
+    if route.startswith("heyoka"):
+        from .heyoka_adapter import heyoka_model
+
+        hm = heyoka_model(system, p.params)
+        y0 = initial_vector(p, system)
+        ta, c = hm.integrator(y0, tol, compact=False if route == "heyoka_default" else None)
+        t0 = time.perf_counter()
+        Y, _ = hm.propagate(ta, y0, times)
+        return dict(derive=hm.derive_s, compile=c, integrate=time.perf_counter() - t0, states=Y.tolist(),
+                    note="compact_mode" if (hm.compact and route == "heyoka") else "")
+    backend = "python" if route == "python" else "numba"
+    t0 = time.perf_counter()
+    model = system.compile(p.params, backend=backend)
+    compile_s = time.perf_counter() - t0
+    extra = {"loop": "compiled"} if route == "compiled" else ({"loop": "scipy"} if route == "numba" else {})
+    t0 = time.perf_counter()
+    sol = system.simulate((0.0, p.t_end), p.initial, p.params, method="DOP853", rtol=tol, atol=tol * p.atol_scale,
+                          backend=backend, model=model, t_eval=times, **p.options, **extra)
+    return dict(derive=derive, compile=compile_s, integrate=time.perf_counter() - t0, states=sol.y.tolist())
+
+
+def first_result(problem, route: str, reference_states: np.ndarray, *, tol: float = 1e-10, quick: bool = False,
+                 timeout: float = 400.0) -> FirstResult:
+    """Run ``route`` on ``problem`` in a fresh process with empty caches; error against the reference."""
+    args = json.dumps(dict(problem=problem.name, route=route, tol=tol, quick=quick))
+    with tempfile.TemporaryDirectory(prefix="lagrange-ttfr-") as tmp:
+        env = dict(os.environ, LAGRANGE_CACHE_DIR=tmp, NUMBA_CACHE_DIR=tmp)
+        try:
+            out = subprocess.run([sys.executable, "-m", "lagrange.bench.first_result", args], env=env,
+                                 capture_output=True, text=True, timeout=timeout)
+        except subprocess.TimeoutExpired:
+            return FirstResult(route, None, None, None, None, f"timed out after {timeout:g} s")
+    lines = [ln for ln in out.stdout.splitlines() if ln.startswith("{")]
+    if out.returncode != 0 or not lines:
+        msg = (out.stderr.strip().splitlines() or ["no output"])[-1]
+        return FirstResult(route, None, None, None, None, msg[:200])
+    r = json.loads(lines[-1])
+    Y = np.array(r["states"])
+    err = float(np.max(np.abs(Y - reference_states))) if Y.shape == reference_states.shape else None
+    return FirstResult(route, r["derive"], r["compile"], r["integrate"], err, r.get("note", ""))
+
+
+if __name__ == "__main__":  # pragma: no cover - exercised through first_result()
+    a = json.loads(sys.argv[1])
+    print(json.dumps(_child(a["problem"], a["route"], float(a.get("tol", 1e-10)), bool(a.get("quick", False)))))

@@ -1,0 +1,73 @@
+"""The plain ``sympy.physics.mechanics`` route for planar N-link pendulums — what a user writes without lagrange.
+
+``LagrangesMethod`` derives ``M`` and ``f`` (dynamicsymbols, then ``msubs`` to plain symbols), ``lambdify``
+(numpy, ``cse=True``) generates them, ``numpy.linalg.solve`` solves ``M q̈ = f`` inside the rhs, and
+``scipy.integrate.solve_ivp`` integrates. The same model as :func:`lagrange.examples.n_link_pendulum`
+(unit masses and rods, absolute angles from the downward vertical, parameter g).
+"""
+
+from __future__ import annotations
+
+import time
+from collections.abc import Callable
+
+import numpy as np
+import sympy as sp
+
+__all__ = ["plain_pendulum_route"]
+
+
+def plain_pendulum_route(n: int, g: float = 9.81) -> tuple[float, float, Callable]:
+    """Build the plain-sympy rhs of the N-link pendulum.
+
+    Returns
+    -------
+    derive_s : seconds spent in ``LagrangesMethod`` (and ``msubs``)
+    build_s : seconds spent in ``lambdify``
+    rhs : ``rhs(t, y) -> ndarray (2n,)`` with ``y = [q, q̇]``
+
+    >>> _, _, rhs = plain_pendulum_route(1)
+    >>> bool(np.isclose(rhs(0.0, np.array([0.5, 0.0]))[1], -9.81 * np.sin(0.5)))
+    True
+    """
+    from sympy.physics.mechanics import (
+        LagrangesMethod,
+        Lagrangian,
+        Particle,
+        Point,
+        ReferenceFrame,
+        dynamicsymbols,
+        msubs,
+    )
+
+    t0 = time.perf_counter()
+    q = dynamicsymbols(f"q1:{n + 1}")
+    u = [qi.diff() for qi in q]
+    gs = sp.Symbol("g")
+    N = ReferenceFrame("N")
+    O = Point("O")
+    O.set_vel(N, 0)
+    parts, prev = [], O
+    for i in range(n):
+        P = prev.locatenew(f"P{i}", sp.sin(q[i]) * N.x - sp.cos(q[i]) * N.y)
+        P.set_vel(N, P.pos_from(O).dt(N))
+        pa = Particle(f"pa{i}", P, 1)
+        pa.potential_energy = gs * P.pos_from(O).dot(N.y)
+        parts.append(pa)
+        prev = P
+    lm = LagrangesMethod(Lagrangian(N, *parts), q)
+    lm.form_lagranges_equations()
+    qs, us = sp.symbols(f"q0:{n}"), sp.symbols(f"u0:{n}")
+    rep = dict(zip(u, us)) | dict(zip(q, qs))
+    M, f = msubs(lm.mass_matrix, rep), msubs(lm.forcing, rep)
+    t1 = time.perf_counter()
+    fM = sp.lambdify((qs, us, gs), M, modules="numpy", cse=True)
+    ff = sp.lambdify((qs, us, gs), f, modules="numpy", cse=True)
+    t2 = time.perf_counter()
+
+    def rhs(t, y):
+        acc = np.linalg.solve(np.asarray(fM(y[:n], y[n:], g), dtype=float),
+                              np.asarray(ff(y[:n], y[n:], g), dtype=float).ravel())
+        return np.concatenate([y[n:], acc])
+
+    return t1 - t0, t2 - t1, rhs

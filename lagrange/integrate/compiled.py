@@ -1,0 +1,256 @@
+"""The compiled integrator loop: adaptive DOP853 / RK45 run entirely in numba, no Python per step.
+
+``simulate(..., loop=...)`` chooses between this loop and scipy's ``solve_ivp``:
+
+``"compiled"``
+    The generic loops of :mod:`lagrange.integrate._rk_loops`, compiled once per machine and cached on
+    disk, called with the model's ``field`` (:mod:`lagrange.codegen.rk_source`) as a numba first-class
+    function: a new model only pays for JIT-compiling its own right-hand side. Implies ``backend="numba"``
+    (``pip install lagrange[fast]``). Supports ``DOP853`` and ``RK45`` for unconstrained systems without
+    events or dry-friction switches; anything else is a :class:`TypeError` naming the feature.
+``"scipy"``
+    ``solve_ivp`` (events, constraints, friction switches, every scipy method).
+``"auto"`` (default)
+    The compiled loop when the model's backend is numba and the problem is supported, else scipy; the
+    trajectory's ``method`` label says which loop ran and, for a numba model run by scipy, why.
+
+The loop is a transcription of scipy's ``DOP853``/``RK45`` (same tableaux, error norm, step-size
+controller, initial step, dense output at ``t_eval``), so ``rtol``/``atol`` mean the same thing and
+results agree with ``solve_ivp`` to round-off-level differences in the step sequence.
+
+Failures inside the loop come back as a :class:`LoopStatus` with the time reached and the outputs up to
+there; :func:`integrate_compiled` raises :class:`~lagrange.errors.IntegrationError` carrying ``t``,
+``state`` and ``partial`` (the :class:`~lagrange.results.trajectory.Trajectory` so far).
+"""
+
+from __future__ import annotations
+
+import importlib.util
+import warnings
+from dataclasses import dataclass
+from enum import Enum
+from pathlib import Path
+from types import ModuleType
+
+import numpy as np
+
+from ..codegen.numeric import NumericModel
+from ..conventions import VELOCITY_SUFFIX
+from ..errors import BackendError, IntegrationError
+from ..model.coordinates import coordinate_name
+from ..results.trajectory import Trajectory
+
+__all__ = ["LOOPS", "LOOP_METHODS", "LoopStatus", "LoopResult", "choose_loop", "loops", "run_loop",
+           "integrate_compiled"]
+
+LOOPS = ("auto", "scipy", "compiled")
+#: the methods of the compiled loop (functions of the same name, lower case, in ``_rk_loops``)
+LOOP_METHODS = ("DOP853", "RK45")
+#: default cap on accepted steps of one compiled run
+MAX_STEPS = 10_000_000
+
+
+class LoopStatus(Enum):
+    """How a compiled run ended; the value is ``(code, what happened and how to fix it)``."""
+
+    SUCCESS = (0, "The solver successfully reached the end of the integration interval.")
+    STEP_TOO_SMALL = (1, "the step size fell below 10 ulp of t: a singularity of the model (a coordinate "
+                         "reaching a division by zero), a blow-up, stiffness (try method='LSODA' or 'Radau' with "
+                         "loop='scipy'), or Euler angles passing through gimbal lock (use a Quaternion orientation)")
+    NON_FINITE = (2, "a non-finite derivative or state appeared: a blow-up, a singular configuration or a "
+                     "parameter out of range")
+    DIVISION_BY_ZERO = (3, "division by zero while evaluating the model: a singular mass matrix (a massless "
+                           "coordinate or gimbal lock) or a coordinate reaching a singular value")
+    MAX_STEPS = (4, "the maximum number of steps was reached: raise max_steps, loosen rtol/atol or shorten "
+                    "t_span")
+
+    @classmethod
+    def from_code(cls, code: int) -> LoopStatus:
+        return next(s for s in cls if s.value[0] == code)
+
+    @property
+    def message(self) -> str:
+        return self.value[1]
+
+
+@dataclass(frozen=True)
+class LoopResult:
+    """Raw output of one compiled run: ``t`` (k,), ``z`` (k, nz) at the output times reached, the time and
+    state where the loop stopped, and counters."""
+
+    status: LoopStatus
+    t: np.ndarray
+    z: np.ndarray
+    t_reached: float
+    z_reached: np.ndarray
+    nfev: int
+    steps: int
+    rejected: int
+
+
+def _numba_available() -> bool:
+    return importlib.util.find_spec("numba") is not None
+
+
+def unsupported(eqs, method: str, *, events, switches) -> str | None:
+    """Why the compiled loop cannot run this problem (None when it can)."""
+    if method not in LOOP_METHODS:
+        return f"method {method!r} (the compiled loop has {', '.join(LOOP_METHODS)})"
+    if events:
+        return "events"
+    if switches:
+        return "dry-friction sign() switches (use friction='regularize')"
+    if eqs.is_rough:
+        return "rough constraints"
+    if eqs.m:
+        return "constraints"
+    return None
+
+
+def choose_loop(loop: str, *, backend: str, model: NumericModel | None, eqs, method: str, events, switches
+                ) -> tuple[bool, str]:
+    """``(use the compiled loop?, note for the method label)`` for ``simulate(loop=...)``.
+
+    ``backend`` is the requested backend (used when ``model`` is None). Raises :class:`TypeError` for an
+    unknown ``loop`` or, with ``loop="compiled"``, an unsupported feature; :class:`BackendError` when
+    numba is missing or the given model (or ``backend="reference"``) is not numba code.
+    """
+    if loop not in LOOPS:
+        raise TypeError(f"loop must be one of {', '.join(map(repr, LOOPS))}, got {loop!r}")
+    if model is not None:
+        effective = model.backend
+    else:
+        effective = ("numba" if _numba_available() else "python") if backend == "auto" else backend
+    if loop == "scipy":
+        return False, "scipy loop" if effective == "numba" else ""
+    why = unsupported(eqs, method, events=events, switches=switches)
+    if loop == "compiled":
+        if not _numba_available():
+            raise BackendError("loop='compiled' needs numba: install it with `pip install lagrange[fast]`")
+        if effective == "reference" or (model is not None and effective != "numba"):
+            raise BackendError(f"loop='compiled' runs generated numba code, but the model's backend is "
+                               f"{effective!r}: use backend='numba'")
+        if why:
+            raise TypeError(f"loop='compiled' does not support {why}: use loop='scipy' (or 'auto')")
+        return True, "compiled loop"
+    if effective != "numba":
+        return False, ""
+    if why:
+        return False, f"scipy loop: {why} not supported by the compiled loop"
+    return True, "compiled loop"
+
+
+_LOADED: dict[Path, ModuleType] = {}
+
+
+def loops() -> ModuleType:
+    """The compiled loops (:mod:`lagrange.integrate._rk_loops`), imported once per process.
+
+    The module is imported from a copy in lagrange's cache directory
+    (:func:`~lagrange.codegen.numba_backend.cache_dir`, ``$LAGRANGE_CACHE_DIR``), named by the hash of its
+    text and of the lagrange, numba, NumPy and Python versions, like the generated model modules: numba
+    writes its cache next to the module (``__pycache__``, or ``$NUMBA_CACHE_DIR`` when set), which works
+    even when lagrange is installed in a read-only site-packages, and the loops are compiled once per
+    machine and version. A corrupted numba cache is purged and rebuilt once.
+    """
+    from ..codegen.numba_backend import _require_numba, cache_dir, import_module, purge_numba_cache, write_module
+
+    root = cache_dir()
+    if root not in _LOADED:
+        _require_numba("loop='compiled'")
+        name, path = write_module("rkloops", Path(__file__).with_name("_rk_loops.py").read_text(encoding="utf-8"))
+        try:
+            _LOADED[root] = import_module(name, path)
+        except Exception:  # noqa: BLE001 - a stale or corrupted numba cache entry: purge it and rebuild once
+            purge_numba_cache(name, path)
+            try:
+                _LOADED[root] = import_module(name, path)
+            except Exception as exc:  # noqa: BLE001 - one line naming the module
+                raise BackendError(f"compiling the integrator loops {path} with numba failed after purging "
+                                   f"its cache: {type(exc).__name__}: {exc}") from exc
+    return _LOADED[root]
+
+
+def _field(model: NumericModel):
+    """The model's compiled ``field(t, z, p, out) -> ok`` (:mod:`lagrange.codegen.rk_source`)."""
+    field = getattr(getattr(model.dynamics, "py_func", None), "__globals__", {}).get("field")
+    if field is None:
+        raise BackendError("this model has no compiled field for the loop (build it with backend='numba', "
+                           "no constraints)")
+    return field
+
+
+def run_loop(model: NumericModel, method: str, t_span, z0, t_eval, *, rtol: float, atol: float,
+             max_step: float = np.inf, first_step: float | None = None, max_steps: int = MAX_STEPS) -> LoopResult:
+    """Run the compiled ``method`` loop from ``z0`` (``y0``, plus the work 0 for non-conservative systems).
+
+    Tolerances are validated as scipy does (``rtol`` below 100 ε is raised to it with a warning;
+    negative ``atol`` or non-positive ``max_step`` is a ValueError), and ``t_eval`` must lie in
+    ``t_span``, sorted in the direction of integration.
+    """
+    t0, t1 = float(t_span[0]), float(t_span[1])
+    rtol, atol, max_step = float(rtol), float(atol), float(max_step)
+    eps100 = 100 * np.finfo(float).eps
+    if rtol < eps100:
+        warnings.warn(f"rtol={rtol:g} is below 100 eps; using {eps100:g}", stacklevel=3)
+        rtol = eps100
+    if atol < 0:
+        raise ValueError("atol must be non-negative")
+    if not max_step > 0:
+        raise ValueError("max_step must be positive")
+    t_eval = np.ascontiguousarray(t_eval, dtype=float)
+    if t_eval.ndim != 1:
+        raise ValueError("t_eval must be 1-dimensional")
+    if np.any(t_eval < min(t0, t1)) or np.any(t_eval > max(t0, t1)):
+        raise ValueError("Values in `t_eval` are not within `t_span`.")
+    d = np.diff(t_eval)
+    if (t1 > t0 and np.any(d <= 0)) or (t1 < t0 and np.any(d >= 0)):
+        raise ValueError("Values in `t_eval` are not properly sorted.")
+    if method not in LOOP_METHODS:
+        raise TypeError(f"the compiled loop has the methods {', '.join(LOOP_METHODS)}, not {method!r}")
+    field = _field(model)
+    loop = getattr(loops(), method.lower())
+    z0 = np.ascontiguousarray(z0, dtype=float)
+    p = np.ascontiguousarray(model.params, dtype=float)
+    code, t_end, z_end, Y, n_out, nfev, steps, rejected = loop(
+        field, t0, t1, z0.copy(), p, rtol, atol, max_step, float(first_step or 0.0), t_eval, int(max_steps))
+    return LoopResult(LoopStatus.from_code(int(code)), t_eval[:n_out].copy(), np.array(Y[:n_out]), float(t_end),
+                      np.array(z_end), int(nfev), int(steps), int(rejected))
+
+
+def integrate_compiled(model: NumericModel, method: str, t_span, y0, t_eval, *, rtol: float, atol: float,
+                       max_step: float = np.inf, label: str | None = None, max_steps: int = MAX_STEPS
+                       ) -> Trajectory:
+    """Integrate ``model`` from ``y0 = [q, q̇]`` with the compiled loop and return the Trajectory.
+
+    Non-conservative systems carry the work integral ∫ dh/dt dt as an extra state (same tolerances as
+    the scipy path). ``label`` is the Trajectory's ``method`` (default ``"<method> (compiled loop)"``).
+
+    Raises
+    ------
+    IntegrationError
+        The loop stopped early (:class:`LoopStatus`); ``t``, ``state`` and ``partial`` say where and
+        what was computed.
+    """
+    eqs = model.equations
+    n2 = 2 * eqs.n
+    conservative = eqs.is_conservative
+    y0 = np.asarray(y0, dtype=float)
+    z0 = y0 if conservative else np.append(y0, 0.0)
+    res = run_loop(model, method, t_span, z0, t_eval, rtol=rtol, atol=atol, max_step=max_step,
+                   max_steps=max_steps)
+    ok = res.status is LoopStatus.SUCCESS
+    message = f"{res.status.message if ok else 'stopped early'} ({res.steps} steps, {res.rejected} rejected)"
+    traj = Trajectory(t=res.t, y=res.z[:, :n2].copy(), model=model, method=label or f"{method} (compiled loop)",
+                      success=ok, message=message, nfev=res.nfev,
+                      work=None if conservative else res.z[:, n2].copy(), initial=(float(t_span[0]), y0.copy()))
+    if ok:
+        return traj
+    names = [coordinate_name(c) for c in eqs.coordinates]
+    zr = res.z_reached
+    state_txt = ", ".join([f"{nm}={zr[i]:.6g}" for i, nm in enumerate(names)]
+                          + [f"{nm}{VELOCITY_SUFFIX}={zr[eqs.n + i]:.6g}" for i, nm in enumerate(names)])
+    raise IntegrationError(
+        f"the compiled {method} loop stopped at t={res.t_reached:.9g} ({state_txt}): {res.status.message}. "
+        f"The trajectory up to there ({len(res.t)} output points) is in the exception's `partial` attribute.",
+        t=res.t_reached, state=dict(zip(eqs.coordinates, zr[:n2])), partial=traj)

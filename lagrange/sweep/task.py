@@ -1,0 +1,217 @@
+"""One run of a sweep: a picklable task ``task(point) -> {column: value}`` and the wrapper that times it and
+turns any exception into a row.
+
+:class:`SimulationTask` is the task for a :class:`~lagrange.System`: it carries the system and its compiled
+:class:`~lagrange.codegen.numeric.NumericModel` (pickled by source, rebuilt once per worker process), binds
+the point's parameter and initial values, calls :func:`lagrange.integrate.run.simulate` and reduces the
+:class:`~lagrange.results.trajectory.Trajectory` to scalars: the default summaries (success, nfev, the final
+time and state, the energy error — the power-balance residual when the system is not conservative) and
+the user's summary functions.
+
+Any picklable callable ``task(point) -> Mapping[str, scalar]`` can be swept instead (module-level
+functions; with ``cloudpickle`` installed, lambdas and notebook functions too).
+"""
+
+from __future__ import annotations
+
+import math
+import pickle
+import time
+from collections.abc import Callable, Mapping, Sequence
+from typing import Any
+
+import numpy as np
+
+from ..conventions import VELOCITY_SUFFIX
+from ..errors import SweepError
+from ..integrate.run import initial_state
+from ..model.coordinates import coordinate_name
+
+__all__ = ["SimulationTask", "execute", "dumps_task", "state_names", "scalar_columns"]
+
+Summary = Callable[[Any], Any]
+
+
+def state_names(system) -> list[str]:
+    """``["q1", …, "q1_dot", …]``: the names of the state entries (and of initial values)."""
+    names = [coordinate_name(q) for q in system.derived.coordinates]
+    return names + [nm + VELOCITY_SUFFIX for nm in names]
+
+
+def scalar_columns(name: str, value) -> dict[str, Any]:
+    """A summary's value as table columns: a scalar under ``name``; a dict's entries under their keys; a 1-D
+    array under ``name_0, name_1, …``. Raises SweepError for anything else."""
+    if isinstance(value, Mapping):
+        out: dict[str, Any] = {}
+        for k, v in value.items():
+            out.update(scalar_columns(str(k), v))
+        return out
+    if isinstance(value, (str, bool, int, float, type(None), np.generic)):
+        return {name: value.item() if isinstance(value, np.generic) else value}
+    arr = np.asarray(value)
+    if arr.ndim == 0:
+        return {name: arr.item()}
+    if arr.ndim == 1:
+        return {f"{name}_{i}": v.item() for i, v in enumerate(arr)}
+    raise SweepError(f"summary {name!r} returned an array of shape {arr.shape}: return scalars, a dict of "
+                     "scalars or a 1-D array")
+
+
+class SimulationTask:
+    """``task(point)``: simulate ``system`` with the point's values and summarize the trajectory.
+
+    Parameters
+    ----------
+    system : System
+    t_end : float — integrate over [0, t_end] (a terminal event may stop earlier)
+    initial, params : base values (names or symbols as keys); the point's entries override them by name
+    options : keyword arguments of :func:`~lagrange.integrate.run.simulate` (``method``, ``rtol``, …)
+    summaries : callables ``f(trajectory)`` returning a scalar (column ``f.__name__``), a dict of scalars or
+        a 1-D array (see :func:`scalar_columns`)
+    setup : optional ``setup(system, point) -> (initial_updates, params_updates)`` for quantities that are
+        neither parameters nor initial values (a top's spin and tilt → Euler angles and rates)
+    events : optional ``events(system) -> list`` of scipy-style event functions, built once per process
+    backend : code-generation backend of the model compiled here and shipped to the workers
+
+    Point names must be parameters, coordinates, velocities (``q_dot``) or, with ``setup``, anything.
+    """
+
+    def __init__(self, system, t_end: float, initial: Mapping, params: Mapping | None = None, *,
+                 options: Mapping | None = None, summaries: Sequence[Summary] = (), setup: Callable | None = None,
+                 events: Callable | None = None, backend: str = "python", first_point: Mapping | None = None):
+        self.system = system
+        self.t_end = float(t_end)
+        names = state_names(system)
+        y0 = initial_state(system.derived.coordinates, initial) if initial else None
+        self.initial = dict(zip(names, map(float, y0))) if y0 is not None else {}
+        self.params = {k.name if hasattr(k, "name") else str(k): v for k, v in (params or {}).items()}
+        self.options = dict(options or {})
+        if "model" in self.options or "events" in self.options:
+            raise SweepError("pass the model via `backend` and events as a factory `events(system) -> list`, "
+                             "not as simulate options (they must be rebuilt in each worker process)")
+        self.summaries = tuple(summaries)
+        self.setup, self.events = setup, events
+        bind = {**self.params, **{k: v for k, v in (first_point or {}).items() if k in self.parameter_names}}
+        self.model = system.compile(bind, backend=backend)
+        self._event_list: list | None = None
+
+    @property
+    def parameter_names(self) -> list[str]:
+        return [s.name for s in self.system.derived.numeric_parameters]
+
+    def check_point(self, point: Mapping) -> None:
+        """Raise SweepError naming every point entry that is neither a parameter nor a state entry."""
+        if self.setup is not None:
+            return
+        known = set(self.parameter_names) | set(state_names(self.system))
+        unknown = [k for k in point if k not in known]
+        if unknown:
+            raise SweepError(f"cannot sweep {', '.join(unknown)}: not a parameter ({', '.join(self.parameter_names)})"
+                             f" nor an initial value ({', '.join(state_names(self.system))}) of this system")
+
+    def __getstate__(self):
+        state = dict(self.__dict__)
+        state["_event_list"] = None  # closures: rebuilt in each process
+        return state
+
+    def __call__(self, point: Mapping) -> dict[str, Any]:
+        initial, params = dict(self.initial), dict(self.params)
+        if self.setup is not None:
+            ini, par = self.setup(self.system, point)
+            initial.update(_by_name(self.system, ini))
+            params.update({k.name if hasattr(k, "name") else str(k): v for k, v in par.items()})
+        pnames, snames = set(self.parameter_names), set(state_names(self.system))
+        for k, v in point.items():
+            if k in pnames:
+                params[k] = v
+            elif k in snames:
+                initial[k] = v
+        if self.events is not None and self._event_list is None:
+            self._event_list = list(self.events(self.system))
+        model = self.model.with_params(params) if params else self.model
+        traj = self.system.simulate(self.t_end, initial, params, model=model, events=self._event_list,
+                                    **self.options)
+        return {**default_summary(traj), **_user_summaries(self.summaries, traj)}
+
+
+def _by_name(system, values: Mapping) -> dict[str, float]:
+    if not values:
+        return {}
+    names = state_names(system)
+    n = len(names) // 2
+    out = {}
+    for key, v in values.items():
+        if isinstance(key, str):
+            out[key] = float(v)
+        elif getattr(key, "derivative_count", 0) == 1:
+            out[coordinate_name(key.expr) + VELOCITY_SUFFIX] = float(v)
+        else:
+            out[coordinate_name(key)] = float(v)
+    unknown = [k for k in out if k not in names]
+    if unknown:
+        raise SweepError(f"setup returned unknown initial value(s) {', '.join(unknown)} "
+                         f"(state: {', '.join(names[:n])} and velocities)")
+    return out
+
+
+def default_summary(traj) -> dict[str, Any]:
+    """success, nfev, t_final, final_<state name>, energy_error (power-balance residual, relative)."""
+    row: dict[str, Any] = {"success": bool(traj.success), "nfev": int(traj.nfev), "t_final": float(traj.t[-1])}
+    row.update({f"final_{nm}": float(v) for nm, v in zip(traj.names, traj.y[-1])})
+    try:
+        row["energy_error"] = float(traj.energy_error())
+    except (ValueError, ZeroDivisionError, FloatingPointError):
+        row["energy_error"] = math.nan
+    return row
+
+
+def _user_summaries(summaries: Sequence[Summary], traj) -> dict[str, Any]:
+    out: dict[str, Any] = {}
+    for f in summaries:
+        out.update(scalar_columns(getattr(f, "__name__", type(f).__name__), f(traj)))
+    return out
+
+
+def dumps_task(task) -> bytes:
+    """Pickle a task once for all runs (cloudpickle when installed: lambdas and notebook functions travel
+    too). Raises SweepError saying what to change when it cannot be pickled."""
+    try:
+        import cloudpickle
+
+        return cloudpickle.dumps(task)
+    except ImportError:
+        pass
+    except Exception as exc:  # noqa: BLE001 - cloudpickle raises many types; report one clear error
+        raise SweepError(f"the sweep task cannot be sent to worker processes: {type(exc).__name__}: {exc}. "
+                         "Run it in this process with workers=0") from None
+    try:
+        return pickle.dumps(task)
+    except Exception as exc:  # noqa: BLE001
+        raise SweepError(f"the sweep task cannot be pickled for worker processes ({type(exc).__name__}: {exc}): "
+                         "summary, setup and event functions must be module-level functions (or install "
+                         "cloudpickle), or run in this process with workers=0") from None
+
+
+_TASKS: dict[str, Any] = {}  # per process: the unpickled task of each sweep (unpickled once, not per run)
+
+
+def execute(payload: bytes | Any, token: str, rid: str, point: Mapping) -> dict[str, Any]:
+    """Run one point in a worker: the row ``{run_id, status, error, wall_time, …results}``.
+
+    ``payload`` is a task pickled by :func:`dumps_task` (unpickled once per process and kept under
+    ``token``) or the task itself (in-process runs). An exception of the task gives ``status = "error"``
+    and ``error = "Type: message"``; the other runs are unaffected.
+    """
+    if isinstance(payload, bytes):
+        task = _TASKS.get(token)
+        if task is None:
+            task = _TASKS[token] = pickle.loads(payload)  # noqa: S301 - our own payload
+    else:
+        task = payload
+    t0 = time.perf_counter()
+    try:
+        values = dict(task(dict(point)))
+        status, error = "ok", ""
+    except Exception as exc:  # noqa: BLE001 - one failing run must not stop the sweep: it is reported
+        values, status, error = {}, "error", f"{type(exc).__name__}: {exc}".strip()
+    return {"run_id": rid, "status": status, "error": error, **values, "wall_time": time.perf_counter() - t0}
