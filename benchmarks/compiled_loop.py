@@ -168,7 +168,8 @@ def write(rows) -> str:
         "The DOP853/RK45 loops are generic (lagrange/integrate/_rk_loops.py), compiled once per machine and "
         "cached; each model passes its eagerly compiled `field` as a numba first-class function. Before, the "
         "loops were generated into every model's module and their JIT cost 5.9-7.4 s per new model on this "
-        "machine.",
+        "machine. Per-step cost against those inlined loops (measured once, same process, interleaved, min of 15; "
+        "results bitwise identical): N = 2 x0.82-1.05, N = 5 x1.25-1.38, N = 10 x1.04-1.28.",
         "",
     ]
     for n, row in rows.items():

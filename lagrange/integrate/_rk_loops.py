@@ -96,9 +96,9 @@ def _combine(rows, r: int, K, out) -> None:
     out[:] = 0.0
     for k in range(start[r], start[r + 1], 4):
         a0, a1, a2, a3 = val[k], val[k + 1], val[k + 2], val[k + 3]
-        K0, K1, K2, K3 = K[col[k]], K[col[k + 1]], K[col[k + 2]], K[col[k + 3]]
-        for i in range(out.size):
-            out[i] = out[i] + a0 * K0[i] + a1 * K1[i] + a2 * K2[i] + a3 * K3[i]
+        j0, j1, j2, j3 = col[k], col[k + 1], col[k + 2], col[k + 3]
+        for i in range(out.size):  # 2-d indexing, not row views: a view costs a reference count
+            out[i] = out[i] + a0 * K[j0, i] + a1 * K[j1, i] + a2 * K[j2, i] + a3 * K[j3, i]
 
 
 @njit(cache=True, error_model="numpy")
