@@ -32,8 +32,12 @@ def jacobian_function(model: NumericModel) -> Callable:
     tt, ys, ps = numeric_arguments(eqs)
     M = eqs.mass_matrix.xreplace(ren)
     f = eqs.forcing.xreplace(ren)
-    dM = [M.diff(y) for y in ys]
-    df = f.jacobian(ys)
+    # d sign(u)/du = 2 δ(u): zero inside every segment the friction driver integrates (σ frozen there)
+    def no_delta(expr):
+        return expr.replace(sp.DiracDelta, lambda *args: sp.S.Zero)
+
+    dM = [no_delta(M.diff(y)) for y in ys]
+    df = no_delta(f.jacobian(ys))
     fn = sp.lambdify((tt, ys, ps), (M, f, df, dM), modules="numpy", cse=True)
     params = list(model.params)
 
