@@ -32,6 +32,7 @@ from scipy.integrate import solve_ivp
 from sympy.core.cache import clear_cache
 
 import lagrange
+from lagrange.bench.sympy_route import plain_pendulum_route
 from lagrange.examples import n_link_pendulum
 
 RESULTS = Path(__file__).parent / "results"
@@ -40,48 +41,7 @@ TOLS = (1e-4, 1e-6, 1e-8, 1e-10)
 
 def plain_route(n: int):
     """LagrangesMethod + lambdify (numpy, no cse) + np.linalg.solve: (derive_s, build_s, rhs)."""
-    from sympy.physics.mechanics import LagrangesMethod, Particle, Point, ReferenceFrame, dynamicsymbols
-
-    t0 = time.perf_counter()
-    q = dynamicsymbols(f"q1:{n + 1}")
-    u = [qi.diff() for qi in q]
-    g = sp.Symbol("g")
-    N = ReferenceFrame("N")
-    O = Point("O")
-    O.set_vel(N, 0)
-    parts, prev = [], O
-    V = 0
-    for i in range(n):
-        P = prev.locatenew(f"P{i}", sp.sin(q[i]) * N.x - sp.cos(q[i]) * N.y)
-        P.set_vel(N, P.pos_from(O).dt(N))
-        pa = Particle(f"pa{i}", P, 1)
-        pa.potential_energy = g * P.pos_from(O).dot(N.y)
-        parts.append(pa)
-        prev = P
-    from sympy.physics.mechanics import Lagrangian
-
-    L = Lagrangian(N, *parts)
-    lm = LagrangesMethod(L, q)
-    lm.form_lagranges_equations()
-    M, f = lm.mass_matrix, lm.forcing
-    qs = sp.symbols(f"q0:{n}")
-    us = sp.symbols(f"u0:{n}")
-    rep = dict(zip(u, us)) | dict(zip(q, qs))
-    from sympy.physics.mechanics import msubs
-
-    M, f = msubs(M, rep), msubs(f, rep)
-    t1 = time.perf_counter()
-    fM = sp.lambdify((qs, us, g), M, modules="numpy")
-    ff = sp.lambdify((qs, us, g), f, modules="numpy")
-    t2 = time.perf_counter()
-
-    def rhs(t, y, gval=9.81):
-        acc = np.linalg.solve(np.asarray(fM(y[:n], y[n:], gval), dtype=float),
-                              np.asarray(ff(y[:n], y[n:], gval), dtype=float).ravel())
-        return np.concatenate([y[n:], acc])
-
-    del V
-    return t1 - t0, t2 - t1, rhs
+    return plain_pendulum_route(n, cse=False)
 
 
 def ours(n: int, backend: str):

@@ -17,8 +17,9 @@ import sympy as sp
 __all__ = ["plain_pendulum_route"]
 
 
-def plain_pendulum_route(n: int, g: float = 9.81) -> tuple[float, float, Callable]:
-    """Build the plain-sympy rhs of the N-link pendulum.
+def plain_pendulum_route(n: int, g: float = 9.81, *, cse: bool = True) -> tuple[float, float, Callable]:
+    """Build the plain-sympy rhs of the N-link pendulum (``cse``: lambdify's common-subexpression option;
+    ``benchmarks/nlink.py`` measures the plainest route, without it).
 
     Returns
     -------
@@ -61,8 +62,8 @@ def plain_pendulum_route(n: int, g: float = 9.81) -> tuple[float, float, Callabl
     rep = dict(zip(u, us)) | dict(zip(q, qs))
     M, f = msubs(lm.mass_matrix, rep), msubs(lm.forcing, rep)
     t1 = time.perf_counter()
-    fM = sp.lambdify((qs, us, gs), M, modules="numpy", cse=True)
-    ff = sp.lambdify((qs, us, gs), f, modules="numpy", cse=True)
+    fM = sp.lambdify((qs, us, gs), M, modules="numpy", cse=cse)
+    ff = sp.lambdify((qs, us, gs), f, modules="numpy", cse=cse)
     t2 = time.perf_counter()
 
     def rhs(t, y):
