@@ -9,7 +9,8 @@ free-form particles whose transformation equations are random sums of q's, sin/c
   positions (``T = ½ Σ m |J q̇|²`` with J the position Jacobian, ``L = T − V``), and ``M = ∂²L/∂q̇²`` and
   ``f = ∂L/∂q − (∂²L/∂q̇∂q) q̇`` are taken by central finite differences, then compared with the engine's
   M and f and its generated right-hand side;
-* energy conservation along a short ``simulate`` run (the systems are conservative).
+* energy conservation along a short ``simulate`` run (the systems are conservative);
+* the Gauss cross-check (:func:`lagrange.gauss.check_gauss`): the same accelerations from Gauss' principle.
 
 Budgets (examples per test) are module constants, so the README can cite them: the default run uses
 ``*_EXAMPLES``; the ``slow`` variants use ``*_EXAMPLES_SLOW``.
@@ -211,6 +212,20 @@ def _simulate_conserves_energy(system, coords, drawn, seed: int):
     assert sol.energy_error() < 1e-7
 
 
+def _gauss_agrees(system, drawn):
+    """The independent route: Gauss' principle on the declared particles gives the same accelerations."""
+    from lagrange.gauss import check_gauss
+
+    _, _, _, values, regular = drawn
+    res = check_gauss(system, _engine_values(system, values), samples=2, diagnostics=False)
+    if not res.applicable:
+        assert not regular, res.reason  # a chain of positive masses is never singular
+        event(f"free form: Gauss not applicable ({res.reason.split(':')[0]})")
+        return
+    event("chain: Gauss agrees" if regular else "free form: Gauss agrees")
+    assert res.agrees, str(res)
+
+
 def _property_random_system(drawn):
     n, parts, V, values, _ = drawn
     try:
@@ -221,6 +236,7 @@ def _property_random_system(drawn):
         return
     seed = zlib.crc32(f"{V}|{parts}".encode())  # stable across processes (str hashes are salted)
     _check_against_finite_differences(system, drawn, np.random.default_rng(seed))
+    _gauss_agrees(system, drawn)
     _simulate_conserves_energy(system, coords, drawn, seed)
 
 

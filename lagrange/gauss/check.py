@@ -264,7 +264,8 @@ def _run_diagnostics(system, pm, params, initial, t_run, states) -> BalanceDiagn
 
 def _complete(system, params: Mapping, rng) -> tuple[dict, tuple]:
     """Parameters by name; symbols the kinematics need but the equations do not (a constant offset in a
-    position) get random values from the corpus' parameter range — they must not change the accelerations."""
+    position, the mass of a particle at a fixed point) get random values from the corpus' parameter range
+    — they must not change the accelerations."""
     from ..corpus.compare import PARAMETER_RANGE
 
     out = {str(getattr(k, "name", k)): v for k, v in params.items()}
@@ -273,8 +274,8 @@ def _complete(system, params: Mapping, rng) -> tuple[dict, tuple]:
     if unknown:
         raise ParameterError(f"unknown parameter(s) {', '.join(unknown)} (this system's parameters: "
                              f"{', '.join(sorted(known)) or 'none'})")
-    missing = sorted(s.name for s in declared_symbols(system)
-                     if s.name not in out and s not in set(system.parameters))
+    engine = set(system.derived.parameters)  # a declared parameter may cancel out of the equations
+    missing = sorted(s.name for s in declared_symbols(system) if s.name not in out and s not in engine)
     out.update({nm: float(rng.uniform(*PARAMETER_RANGE)) for nm in missing})
     return out, tuple(missing)
 
@@ -321,7 +322,7 @@ def check_gauss(system, params: Mapping, *, samples: int = 5, seed: int = 0, rto
         pm = mass_point_model(system, params)
     except NotApplicable as exc:
         return GaussCheck(name, False, str(exc))
-    wanted = {s.name for s in system.parameters}
+    wanted = {s.name for s in system.derived.parameters}
     lparams = {k: v for k, v in params.items() if k in wanted}
     model = system.compile(lparams)
     names = [coordinate_name(q) for q in system.coordinates]
