@@ -19,6 +19,7 @@ Writes ``benchmarks/results/nlink.md`` and ``benchmarks/results/nlink.png``. Run
 from __future__ import annotations
 
 import argparse
+import os
 import platform
 import statistics
 import time
@@ -30,6 +31,9 @@ import scipy
 import sympy as sp
 from scipy.integrate import solve_ivp
 from sympy.core.cache import clear_cache
+
+# derivation times are measured cold: the derivation cache (lagrange.codegen.derivation_cache) stays off
+os.environ.setdefault("LAGRANGE_DERIVATION_CACHE", "0")
 
 import lagrange
 from lagrange.bench.sympy_route import plain_pendulum_route

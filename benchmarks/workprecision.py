@@ -19,8 +19,12 @@ from __future__ import annotations
 
 import argparse
 import json
+import os
 import re
 from pathlib import Path
+
+# derivation times are measured cold: the derivation cache (lagrange.codegen.derivation_cache) stays off
+os.environ.setdefault("LAGRANGE_DERIVATION_CACHE", "0")
 
 from lagrange.bench.report import readme_section
 from lagrange.bench.suite import run_suite, write_report

@@ -38,3 +38,7 @@ def test_property_and_fault_counts():
     assert _quoted(r"feeds (\d+) random strings") == props.FUZZ_EXAMPLES
     assert _quoted(r"\*\*(\d+) injected faults\*\*") == _module("tests/numerics/test_faults.py").N_FAULTS
     assert _quoted(r"\*\*(\d+) scenarios\*\*") == _module("tests/test_cache.py").CACHE_SCENARIOS
+    derivation = _module("tests/test_derivation_cache.py")
+    assert _quoted(r"\*\*(\d+) derivation-cache scenarios\*\*") == derivation.DERIVATION_CACHE_SCENARIOS
+    assert _quoted(r"\* (\d+) declared changes") == len(derivation.CHANGES)
+    assert _quoted(r"\* (\d+) kinds of damage to each kind of entry") == len(derivation.DAMAGES)

@@ -1,6 +1,7 @@
 """Time to first result: derivation + code generation/compilation + one integration, cold.
 
-Each route runs in a fresh Python process (after its imports) with empty lagrange and numba caches
+Each route runs in a fresh Python process (after its imports, numba's included) with empty lagrange and numba
+caches (``*_primed`` routes: an earlier process compiled the generic kernel, as after a first use)
 (``LAGRANGE_CACHE_DIR`` and ``NUMBA_CACHE_DIR`` point to a new temporary directory), so JIT and LLVM
 compilation are paid as a new user pays them. heyoka's "derive" is ``heyoka.lagrangian`` on the T − V that
 lagrange formed (forming it is not counted, which favours heyoka).
@@ -27,10 +28,21 @@ ROUTES = {
     "python": "lagrange, python backend, DOP853",
     "numba": "lagrange, numba backend (cold JIT), DOP853, scipy loop",
     "compiled": "lagrange, numba compiled loop (cold JIT), DOP853",
+    "compiled_primed": "lagrange, numba compiled loop, DOP853, loops compiled by an earlier process (new model)",
+    "taylor": "lagrange, taylor (interpreted tape), empty caches: includes the one-time kernel compile",
+    "taylor_primed": "lagrange, taylor (interpreted tape), kernel compiled by an earlier process (new model)",
+    "python_rerun": "lagrange, python backend, DOP853, re-run (derivation and code from the on-disk cache)",
+    "taylor_rerun": "lagrange, taylor (interpreted tape), re-run (derivation, code and kernel cached)",
     "sympy": "plain sympy.physics.mechanics + lambdify(cse) + solve_ivp DOP853",
     "heyoka": "heyoka.py (lagrangian + taylor_adaptive, cold LLVM compile)",
     "heyoka_default": "heyoka.py, default mode (cold LLVM compile)",
 }
+
+
+#: what an earlier process leaves in the cache for the ``*_primed`` routes: the generic kernels only
+_PRIME = {"taylor_primed": "from lagrange.integrate.compiled import kernel; "
+                           "kernel('_taylor_loop.py', 'taylorloop', 'taylor').entry('taylor')",
+          "compiled_primed": "from lagrange.integrate.compiled import loops; loops()"}
 
 
 @dataclass(frozen=True)
@@ -55,9 +67,12 @@ def routes_for(problem, *, heyoka: bool) -> list[str]:
     """The routes that apply to ``problem`` (numba ones only when numba is installed)."""
     import importlib.util
 
-    out = ["python"]
+    out = ["python", "python_rerun"]
     if importlib.util.find_spec("numba") is not None:
-        out += ["numba"] + (["compiled"] if problem.name != "stick_slip" else [])  # no friction switches there
+        if problem.name != "stick_slip":  # no friction switches in the compiled loop, no sign() in a Taylor series
+            out += ["numba", "compiled", "compiled_primed", "taylor", "taylor_primed", "taylor_rerun"]
+        else:
+            out += ["numba"]
     if problem.pendulum_links:
         out.append("sympy")
     if heyoka and problem.name != "stick_slip":
@@ -71,6 +86,8 @@ def _child(problem_name: str, route: str, tol: float, quick: bool) -> dict:
 
     p = get_problem(problem_name, quick=quick)
     times = p.times()
+    if route not in ("python", "sympy") and not route.startswith("heyoka"):
+        import numba  # noqa: F401 - imports are not timed (heyoka's import is not either)
     if route == "sympy":
         from scipy.integrate import solve_ivp
 
@@ -94,13 +111,15 @@ def _child(problem_name: str, route: str, tol: float, quick: bool) -> dict:
         Y, _ = hm.propagate(ta, y0, times)
         return dict(derive=hm.derive_s, compile=c, integrate=time.perf_counter() - t0, states=Y.tolist(),
                     note="compact_mode" if (hm.compact and route == "heyoka") else "")
-    backend = "python" if route == "python" else "numba"
+    backend = "python" if route.startswith(("python", "taylor")) else "numba"
     t0 = time.perf_counter()
     model = system.compile(p.params, backend=backend)
     compile_s = time.perf_counter() - t0
-    extra = {"loop": "compiled"} if route == "compiled" else ({"loop": "scipy"} if route == "numba" else {})
+    extra = ({"loop": "compiled"} if route.startswith("compiled") else {"loop": "scipy"} if route == "numba"
+             else {"method": "taylor"} if route.startswith("taylor") else {"method": "DOP853"})
+    extra = {"method": "DOP853"} | extra
     t0 = time.perf_counter()
-    sol = system.simulate((0.0, p.t_end), p.initial, p.params, method="DOP853", rtol=tol, atol=tol * p.atol_scale,
+    sol = system.simulate((0.0, p.t_end), p.initial, p.params, rtol=tol, atol=tol * p.atol_scale,
                           backend=backend, model=model, t_eval=times, **p.options, **extra)
     return dict(derive=derive, compile=compile_s, integrate=time.perf_counter() - t0, states=sol.y.tolist())
 
@@ -111,6 +130,12 @@ def first_result(problem, route: str, reference_states: np.ndarray, *, tol: floa
     args = json.dumps(dict(problem=problem.name, route=route, tol=tol, quick=quick))
     with tempfile.TemporaryDirectory(prefix="lagrange-ttfr-") as tmp:
         env = dict(os.environ, LAGRANGE_CACHE_DIR=tmp, NUMBA_CACHE_DIR=tmp)
+        if route.endswith("_primed"):  # an earlier process compiled the generic kernel, not this model
+            subprocess.run([sys.executable, "-c", _PRIME[route]], env=env, capture_output=True, timeout=timeout)
+        if route.endswith("_rerun"):  # the same run once before, with the derivation cache on
+            env["LAGRANGE_DERIVATION_CACHE"] = "1"
+            subprocess.run([sys.executable, "-m", "lagrange.bench.first_result", args], env=env, capture_output=True,
+                           timeout=timeout)
         try:
             out = subprocess.run([sys.executable, "-m", "lagrange.bench.first_result", args], env=env,
                                  capture_output=True, text=True, timeout=timeout)

@@ -128,6 +128,10 @@ def method_specs(problem: BenchProblem, *, quick: bool = False, heyoka: bool = T
         specs += [MethodSpec(f"{m} numba scipy loop", method=m, backend="numba", loop="scipy") for m in scipy_methods]
         specs += [MethodSpec(f"{m} numba compiled loop", method=m, backend="numba", loop="compiled")
                   for m in ("DOP853", "RK45")]
+    if not friction and _numba_ok():  # dry friction (sign) is not analytic: no Taylor series
+        specs.append(MethodSpec("taylor python (interpreted tape)", method="taylor"))
+        if not quick:
+            specs.append(MethodSpec("taylor numba (compiled series)", method="taylor", backend="numba"))
     if problem.reference_method == "Radau":  # the stiff problem: what auto picks
         specs.append(MethodSpec("auto python", method="auto"))
     if friction:

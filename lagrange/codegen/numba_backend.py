@@ -82,12 +82,13 @@ def write_module(prefix: str, text: str) -> tuple[str, Path]:
     return f"lagrange_{prefix}_{key}", path
 
 
-def atomic_write(path: Path, text: str) -> None:
-    """Replace ``path`` by ``text`` atomically (temporary file in the same directory, fsync, ``os.replace``):
-    a reader sees the old or the new content, never a mix or a truncated file."""
+def atomic_write(path: Path, text: str | bytes) -> None:
+    """Replace ``path`` by ``text`` (str: written as UTF-8; or bytes) atomically (temporary file in the same
+    directory, fsync, ``os.replace``): a reader sees the old or the new content, never a mix or a truncated
+    file."""
     fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.stem}.", suffix=".tmp")
     try:
-        with os.fdopen(fd, "w", encoding="utf-8") as fh:
+        with (os.fdopen(fd, "wb") if isinstance(text, bytes) else os.fdopen(fd, "w", encoding="utf-8")) as fh:
             fh.write(text)
             fh.flush()
             os.fsync(fh.fileno())

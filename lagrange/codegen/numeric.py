@@ -13,6 +13,10 @@ Backends (``backend=``):
     fast backend is tested against.
 ``"auto"``
     ``"numba"`` when numba is importable, else ``"python"``.
+
+The generated source of ``"python"`` and ``"numba"`` is also kept in the derivation cache
+(:mod:`lagrange.codegen.derivation_cache`), keyed by the equations' content, so a re-run skips the CSE and
+printing too.
 """
 
 from __future__ import annotations
@@ -432,16 +436,25 @@ def compile_equations(eqs: Equations, params: Mapping, *, backend: str = "python
     if backend == "reference":
         ref_rhs, mass_forcing = _reference_functions(eqs)
         return NumericModel(eqs, p, "reference", "", ref_rhs, aux, mass_forcing)
-    fused, _ = fuse(eqs, constraint_rhs=constraint_rhs)
+    from .derivation_cache import cached_source
+
+    options = f"backend {backend}; n_params {len(p)}; constraint_rhs {sp.srepr(constraint_rhs)}"
+    src = cached_source(eqs, options, lambda: _generate_source(eqs, backend, len(p), constraint_rhs))
     if backend == "python":
-        src = rhs_source(fused, n_params=len(p), flavour="python")
         return NumericModel(eqs, p, "python", src, _python_rhs(src), aux, mass_forcing)
     from .numba_backend import numba_rhs
 
-    if eqs.m:
-        src = rhs_source(fused, n_params=len(p), flavour="numba")
-    else:  # the module also holds `field`, called by the compiled integrator loops (lagrange.codegen.rk_source)
-        from .rk_source import field_module_source
-
-        src = field_module_source(eqs, fused, len(p))
     return NumericModel(eqs, p, "numba", src, numba_rhs(src), aux, mass_forcing)
+
+
+def _generate_source(eqs: Equations, backend: str, n_params: int, constraint_rhs) -> str:
+    """The generated source of the ``python`` or ``numba`` backend: one CSE over M and f, then printing."""
+    fused, _ = fuse(eqs, constraint_rhs=constraint_rhs)
+    if backend == "python":
+        return rhs_source(fused, n_params=n_params, flavour="python")
+    if eqs.m:
+        return rhs_source(fused, n_params=n_params, flavour="numba")
+    # the module also holds `field`, called by the compiled integrator loops (lagrange.codegen.rk_source)
+    from .rk_source import field_module_source
+
+    return field_module_source(eqs, fused, n_params)

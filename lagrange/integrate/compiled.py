@@ -26,6 +26,7 @@ there; :func:`integrate_compiled` raises :class:`~lagrange.errors.IntegrationErr
 from __future__ import annotations
 
 import importlib.util
+import os
 import warnings
 from dataclasses import dataclass
 from enum import Enum
@@ -40,7 +41,7 @@ from ..errors import BackendError, IntegrationError
 from ..model.coordinates import coordinate_name
 from ..results.trajectory import Trajectory
 
-__all__ = ["LOOPS", "LOOP_METHODS", "LoopStatus", "LoopResult", "choose_loop", "loops", "run_loop",
+__all__ = ["LOOPS", "LOOP_METHODS", "LoopStatus", "LoopResult", "choose_loop", "kernel", "loops", "run_loop",
            "integrate_compiled"]
 
 LOOPS = ("auto", "scipy", "compiled")
@@ -140,35 +141,45 @@ def choose_loop(loop: str, *, backend: str, model: NumericModel | None, eqs, met
     return True, "compiled loop"
 
 
-_LOADED: dict[Path, ModuleType] = {}
+_LOADED: dict[tuple, ModuleType] = {}  # (cache dir, file) and ($LAGRANGE_CACHE_DIR, file): the module
 
 
-def loops() -> ModuleType:
-    """The compiled loops (:mod:`lagrange.integrate._rk_loops`), imported once per process.
+def kernel(filename: str, prefix: str, what: str) -> ModuleType:
+    """A self-contained numba module of this package (``filename``), imported once per process.
 
     The module is imported from a copy in lagrange's cache directory
-    (:func:`~lagrange.codegen.numba_backend.cache_dir`, ``$LAGRANGE_CACHE_DIR``), named by the hash of its
-    text and of the lagrange, numba, NumPy and Python versions, like the generated model modules: numba
-    writes its cache next to the module (``__pycache__``, or ``$NUMBA_CACHE_DIR`` when set), which works
-    even when lagrange is installed in a read-only site-packages, and the loops are compiled once per
-    machine and version. A corrupted numba cache is purged and rebuilt once.
+    (:func:`~lagrange.codegen.numba_backend.cache_dir`, ``$LAGRANGE_CACHE_DIR``), named ``prefix`` + the hash
+    of its text and of the lagrange, numba, NumPy and Python versions, like the generated model modules:
+    numba writes its cache next to the module (``__pycache__``, or ``$NUMBA_CACHE_DIR`` when set), which
+    works even when lagrange is installed in a read-only site-packages, and the kernel is compiled once per
+    machine and version. A corrupted numba cache is purged and rebuilt once; ``what`` names the feature in
+    errors.
     """
+    fast = _LOADED.get((os.environ.get("LAGRANGE_CACHE_DIR"), filename))
+    if fast is not None:
+        return fast
     from ..codegen.numba_backend import _require_numba, cache_dir, import_module, purge_numba_cache, write_module
 
-    root = cache_dir()
-    if root not in _LOADED:
-        _require_numba("loop='compiled'")
-        name, path = write_module("rkloops", Path(__file__).with_name("_rk_loops.py").read_text(encoding="utf-8"))
+    key = (cache_dir(), filename)
+    if key not in _LOADED:
+        _require_numba(what)
+        name, path = write_module(prefix, Path(__file__).with_name(filename).read_text(encoding="utf-8"))
         try:
-            _LOADED[root] = import_module(name, path)
+            _LOADED[key] = import_module(name, path)
         except Exception:  # noqa: BLE001 - a stale or corrupted numba cache entry: purge it and rebuild once
             purge_numba_cache(name, path)
             try:
-                _LOADED[root] = import_module(name, path)
+                _LOADED[key] = import_module(name, path)
             except Exception as exc:  # noqa: BLE001 - one line naming the module
-                raise BackendError(f"compiling the integrator loops {path} with numba failed after purging "
-                                   f"its cache: {type(exc).__name__}: {exc}") from exc
-    return _LOADED[root]
+                raise BackendError(f"compiling {path} ({what}) with numba failed after purging its cache: "
+                                   f"{type(exc).__name__}: {exc}") from exc
+    _LOADED[(os.environ.get("LAGRANGE_CACHE_DIR"), filename)] = _LOADED[key]
+    return _LOADED[key]
+
+
+def loops() -> ModuleType:
+    """The compiled DOP853/RK45 loops (:mod:`lagrange.integrate._rk_loops`), see :func:`kernel`."""
+    return kernel("_rk_loops.py", "rkloops", "loop='compiled'")
 
 
 def _field(model: NumericModel):

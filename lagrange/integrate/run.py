@@ -82,13 +82,32 @@ def _stiffness(eqs, params, t_span, y0) -> tuple[float, float] | None:
     return decay, decay / slow
 
 
-def choose_method(eqs, params=None, t_span=(0.0, 1.0), y0=None) -> tuple[str, str]:
-    """A sensible scipy method and the reason (``method="auto"``).
+def _taylor_ready(eqs) -> bool:
+    """Whether ``method="taylor"`` can run ``eqs`` here (numba installed, analytic unconstrained equations)."""
+    import importlib.util
+
+    from ..codegen.tape import TapeError
+    from .taylor import tape_of
+
+    if importlib.util.find_spec("numba") is None:
+        return False
+    try:
+        tape_of(eqs)
+    except TapeError:
+        return False
+    return True
+
+
+def choose_method(eqs, params=None, t_span=(0.0, 1.0), y0=None, rtol: float | None = None) -> tuple[str, str]:
+    """A sensible method and the reason (``method="auto"``).
 
     From the Jacobian's eigenvalues at the initial state: a fast decay (rate × horizon > 10³) much faster
     than the slowest mode (ratio > 10³) is stiffness → Radau with the generated Jacobian (explicit methods
     would need hundreds of thousands of steps). Otherwise dissipative systems (P or D) get LSODA, which
-    switches to BDF if stiffness appears later, and the rest DOP853, the most efficient at tight tolerances.
+    switches to BDF if stiffness appears later. The rest get DOP853, the most efficient Runge–Kutta method
+    at tight tolerances — or, when ``rtol ≤ 1e-11`` and the equations are analytic and unconstrained (and
+    numba is installed), the Taylor method, whose order grows with the accuracy at an unchanged step
+    (measured in ``benchmarks/results/workprecision.md``).
     """
     horizon = abs(float(t_span[1]) - float(t_span[0]))
     st = _stiffness(eqs, params, t_span, y0)
@@ -97,6 +116,9 @@ def choose_method(eqs, params=None, t_span=(0.0, 1.0), y0=None) -> tuple[str, st
                          f"(stiffness ratio {st[1]:.3g}); Radau with the generated Jacobian")
     if eqs.power_function != 0 or eqs.rayleigh != 0:
         return "LSODA", "dissipation present (P or rayleigh): possibly stiff later, LSODA switches to BDF if so"
+    if rtol is not None and rtol <= 1e-11 and _taylor_ready(eqs):
+        return "taylor", (f"no dissipation, non-stiff, rtol={rtol:g}: the Taylor method (order "
+                          f"{max(2, math.ceil(-math.log(rtol) / 2 + 1))}) needs fewer operations than DOP853 here")
     return "DOP853", "no dissipation: non-stiff, DOP853 is the most efficient explicit method"
 
 
@@ -172,6 +194,12 @@ def _state_function(model: NumericModel, *, with_work: bool):
                 out, lam = list(fun(t_, y)), []
             out.append(power(t_, y.tolist(), lam))
         s = sum(out)
+        if isinstance(s, complex):  # plain Python: a negative number to a fractional power is complex
+            raise IntegrationError(
+                f"complex derivative at t={t_:.9g} ({_state_text(model, z)}): the model left its domain (a "
+                "negative number raised to a fractional power, e.g. the square root of a negative number): a "
+                "coordinate passed a limit of the model, or a parameter is out of range",
+                t=float(t_), state=dict(zip([*model.equations.coordinates], z)))
         if s != s or s in (math.inf, -math.inf):
             raise IntegrationError(
                 f"non-finite derivative at t={t_:.9g} ({_state_text(model, z)}); likely causes: a "
@@ -302,6 +330,30 @@ def _check_initial_mass_matrix(system, model: NumericModel, t0: float, y0) -> No
                           f"{np.linalg.cond(M):.2g}).{hint}", GimbalLockWarning, stacklevel=3)
 
 
+def _simulate_taylor(system, eqs, t_span, initial, params, *, model, backend, t_eval, n_points, rtol, atol,
+                     max_step, events, switches, why) -> Trajectory:
+    """``method="taylor"`` (:mod:`lagrange.integrate.taylor`): checks, model, initial state, run."""
+    from .taylor import integrate_taylor
+
+    if events:
+        raise TypeError("method='taylor' does not locate events: use method='DOP853' (or another scipy method)")
+    if switches:
+        raise TypeError("method='taylor' needs analytic equations, and this system has dry-friction sign() "
+                        "switches: use method='DOP853' (events) or friction='regularize' with an RK method")
+    if model is None or model.equations is not eqs:
+        p = params if model is None else dict(zip(eqs.numeric_parameters, model.params))
+        model = compile_equations(eqs, p, backend=backend if model is None else model.backend)
+    y0 = initial_state(eqs.coordinates, initial)
+    _check_initial_mass_matrix(system, model, t_span[0], y0)
+    t_eval = np.linspace(t_span[0], t_span[1], n_points) if t_eval is None else t_eval
+    label = f"taylor ({'compiled series' if model.backend == 'numba' else 'interpreted tape'}" + (
+        f"; auto: {why})" if why else ")")
+    try:
+        return integrate_taylor(model, t_span, y0, t_eval, rtol=rtol, atol=atol, max_step=max_step, label=label)
+    except ValueError as exc:
+        raise IntegrationError(f"integration failed: {exc}") from exc
+
+
 def simulate(
     system,
     t_span,
@@ -333,8 +385,11 @@ def simulate(
     initial : dict keyed by coordinates, their velocities (``q.diff(t)``) or names (``"q"``, ``"q_dot"``)
     params : dict of parameter values keyed by symbol or name
     method : one of ``DOP853`` (default), ``RK45``, ``RK23``, ``LSODA``, ``Radau``, ``BDF`` or ``auto``
-        (the implicit ones get the generated Jacobian), or a fixed-step geometric integrator for
-        conservative unconstrained systems — ``midpoint``, ``gl4``, ``gl6`` (Gauss–Legendre, symplectic),
+        (the implicit ones get the generated Jacobian), ``taylor`` (adaptive Taylor series of order
+        ``ceil(−ln(rtol)/2 + 1)`` for unconstrained analytic systems: nothing compiled per model with the
+        python backend, a compiled series with numba; needs numba; see :mod:`lagrange.integrate.taylor`),
+        or a fixed-step geometric integrator for conservative unconstrained systems — ``midpoint``, ``gl4``,
+        ``gl6`` (Gauss–Legendre, symplectic),
         ``verlet`` (Störmer–Verlet, needs a constant mass matrix and V(q)) or ``dg`` (discrete gradient,
         energy conserved to the Newton tolerance) — with ``step=h``; see :mod:`lagrange.integrate.fixed`.
     rtol, atol : tolerances passed to scipy
@@ -397,7 +452,7 @@ def simulate(
         raise TypeError("sign() switches (dry friction) with constraints: use friction='regularize'")
     why = ""
     if method == "auto":
-        method, why = choose_method(eqs, params, (t0, t1), initial_state(eqs.coordinates, initial))
+        method, why = choose_method(eqs, params, (t0, t1), initial_state(eqs.coordinates, initial), rtol=rtol)
     from .fixed import GEOMETRIC, integrate_fixed
 
     if method in GEOMETRIC:
@@ -406,8 +461,12 @@ def simulate(
         y0 = initial_state(eqs.coordinates, initial)
         return integrate_fixed(system, (t0, t1), y0, params, method=method, step=step, n_points=n_points,
                                model=model)
+    if method == "taylor":
+        return _simulate_taylor(system, eqs, (t0, t1), initial, params, model=model, backend=backend, t_eval=t_eval,
+                                n_points=n_points, rtol=rtol, atol=atol, max_step=max_step, events=events,
+                                switches=switches, why=why)
     if method not in SCIPY_METHODS:
-        raise TypeError(f"unknown method {method!r}; choose one of {', '.join(SCIPY_METHODS)}, "
+        raise TypeError(f"unknown method {method!r}; choose one of {', '.join(SCIPY_METHODS)}, 'taylor', "
                         f"{', '.join(GEOMETRIC)} (fixed step) or 'auto'")
     notes = [f"auto: {why}"] if why else []
     if eqs.m and stabilization == "projection" and method not in STEPPABLE:
@@ -491,7 +550,7 @@ def simulate(
         initial=(t0, y0.copy()),
         initial_constraint_violation=initial_report,
         point_params=getattr(res, "point_params", None),
-        switches=(res.switched_model, res.sigma) if switches else (),
+        switches=(res.switched_model, res.sigma, res.transitions) if switches else (),
         t_events=list(res.t_events) if res.t_events is not None else [],
         y_events=[np.asarray(v)[:, :n2] if len(v) else np.empty((0, n2)) for v in res.y_events]
         if res.y_events is not None

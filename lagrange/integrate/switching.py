@@ -6,18 +6,33 @@ A smooth integrator stepping across the jump loses its order and, when the parti
 chatters forever. lagrange offers two documented treatments (``simulate(friction=...)``):
 
 ``"events"`` (default, exact)
-    Every distinct ``sign(u)`` in the equations gets a switch ``σ = ±1``, frozen within a segment,
-    so each segment is smooth and integrated to full accuracy. A terminal event at ``u = 0`` ends the
-    segment; the new ``σ`` is chosen from the one-sided flows (Filippov's rule): with
-    ``g(σ) = du/dt`` evaluated for ``σ = ±1`` (affine in σ because M q̈ = f is),
+    Every distinct ``sign(u)`` in the equations gets a switch ``σ``, frozen within a segment, so each
+    segment is smooth and integrated to full accuracy. Each switch is in one of three modes: **slip±**
+    (σ = ±1) or **stick** (σ = σ*, below). With ``g(σ) = du/dt`` (affine in σ because M q̈ = f is) and
+    ``σ* = (g(+1) + g(−1)) / (g(−1) − g(+1))`` the σ with ``g(σ*) = 0`` — for a block on a rough surface
+    exactly the static friction, in units of μN, needed to hold it — the rules are:
 
-    * ``g(+1) > 0``: leave into ``u > 0`` with ``σ = +1``; ``g(-1) < 0``: leave into ``u < 0``;
-    * otherwise both flows push back onto ``u = 0``: **sticking** (sliding mode). σ is set to the value
-      ``σ* ∈ [-1, 1]`` with ``g(σ*) = 0`` — for a block on a rough surface this is exactly the static
-      friction needed to hold it — and the body stays stuck until ``|σ*|`` reaches 1 (the needed
-      friction exceeds μN), an event that ends the stick.
+    * **slip±** ends at the terminal event ``u = 0`` (crossed towards the surface). The new mode is
+      chosen there from the one-sided flows (Filippov's rule): for a friction-like switch
+      (``g(+1) < g(−1)``) **stick** if ``|σ*| ≤ 1 + η``, else slip with ``σ = sign σ*`` (the side whose
+      flow leaves the surface); otherwise slip+ if ``g(+1) > 0``, slip− if ``g(−1) < 0``, else stick.
+    * **stick** holds ``u`` fixed with ``σ = σ*`` and ends at the terminal event ``|σ*| = 1 + η`` (the
+      friction needed exceeds what is available). The switch then slips with ``σ = sign σ*`` *without*
+      re-testing Filippov's rule: at that event the test would compare two numbers that are zero up to
+      rounding and could send the body back into sticking at the very same instant.
+    * A switch changes mode only at its own event; switches stuck at the same time are solved jointly
+      (the σ* of all of them from one small linear system), others keep their σ.
+    * At the start, a switch with ``|u| ≤ 1e-9 (1 + max|y0|)`` is on its surface (Filippov's rule
+      decides); otherwise it slips with ``σ = sign u``.
 
-    Static and kinetic coefficients are taken equal, as in Wells.
+    **Hysteresis η = rtol** (the integrator's relative tolerance, at least 100 machine epsilons): static
+    friction holds up to (1 + η) μN. It guarantees progress — after a stick ends the body leaves the surface
+    with ``σ·du/dt = η (g(−1) − g(+1))/2 > 0``, so the next event cannot fire at the same instant, and a
+    body loaded exactly to the friction limit stays stuck instead of switching on rounding noise — and it
+    costs O(η²) in the velocity (the stick ends η/(d|σ*|/dt) late while the slip acceleration grows from
+    zero). Static and kinetic coefficients are otherwise equal, as in Wells. :attr:`Trajectory.switches`
+    holds the σ at the output times (|σ| ≤ 1 + η while stuck) and every mode change
+    (:class:`Transition`).
 
 ``"regularize"``
     ``sign(u) → u/sqrt(u² + ε²)`` with ``friction_epsilon = ε``: smooth, cheap, approximate (a stuck
@@ -28,6 +43,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
+from typing import NamedTuple
 
 import numpy as np
 import sympy as sp
@@ -38,9 +54,21 @@ from ..conventions import t
 from ..derive.equations import Equations
 from ..errors import IntegrationError
 
-__all__ = ["switching_functions", "regularized_equations", "switched_equations", "run_switched"]
+__all__ = ["switching_functions", "regularized_equations", "switched_equations", "run_switched", "Transition"]
 
 _MAX_SEGMENTS = 100_000
+_STICK = 0  # mode of a stuck switch; slipping modes are σ = ±1
+_MODE_NAMES = {1: "slip+", -1: "slip-", _STICK: "stick"}
+
+
+class Transition(NamedTuple):
+    """A mode change of switch ``switch`` (index into :func:`switching_functions`) at time ``t``;
+    ``before`` / ``after`` are ``"slip+"``, ``"slip-"`` or ``"stick"`` (``before`` is ``""`` at the start)."""
+
+    t: float
+    switch: int
+    before: str
+    after: str
 
 
 def switching_functions(eqs: Equations) -> list:
@@ -86,174 +114,207 @@ def switched_equations(eqs: Equations, switches: list) -> tuple[Equations, tuple
     return new, sigmas
 
 
+class _Switched:
+    """The numeric pieces of a switched run: the right-hand side with the σ's among its parameters (after
+    the ``nparam`` user parameters), the switching functions u_k and their rates g_k = du_k/dt."""
+
+    def __init__(self, model, switches):
+        from ..codegen.numeric import compile_equations
+
+        eqs0 = model.equations
+        eqs, sigmas = switched_equations(eqs0, switches)
+        base = dict(zip(eqs0.parameters, model.params))
+        backend = model.backend if model.backend != "reference" else "python"
+        self.model = compile_equations(eqs, {**base, **{s: 1.0 for s in sigmas}}, backend=backend)
+        self.eqs, self.K, self.n2, self.nparam = eqs, len(switches), 2 * eqs.n, len(eqs0.parameters)
+        ren = rename_map(eqs)
+        tt, ys, ps = numeric_arguments(eqs)  # switched eqs carry the σ's among their parameters
+        # switching functions may contain parameters (a belt speed): evaluated with the σ-free parameter values
+        self._p_u = np.concatenate([model.params, np.ones(self.K)])
+        self._u = sp.lambdify((tt, ys, ps), [u.xreplace(ren) for u in switches], modules="math")
+        grad = [[sp.diff(u, s).xreplace(ren) for s in (*eqs.q, *eqs.qd, t)] for u in switches]
+        self._grad = sp.lambdify((tt, ys, ps), grad, modules="math")
+
+    def power_function(self):
+        """``(t, y, p, λ) ↦`` power of the non-conservative forces (the work integrand)."""
+        tt, ys, ps = numeric_arguments(self.eqs)
+        rate = self.eqs.jacobi_rate.xreplace(rename_map(self.eqs))
+        return sp.lambdify((tt, ys, ps, list(self.eqs.multipliers)), rate, modules="math", cse=True)
+
+    def u(self, t_, y) -> list:
+        return self._u(t_, list(y), self._p_u)
+
+    def g(self, t_, y, p) -> np.ndarray:
+        """du_k/dt for every switch with the parameters (σ's included) ``p``."""
+        gr = np.asarray(self._grad(t_, list(y), self._p_u), dtype=float).reshape(self.K, self.n2 + 1)
+        return gr[:, :-1] @ np.asarray(self.model.rhs(t_, y, p), dtype=float) + gr[:, -1]
+
+    def solve_stuck(self, t_, y, p, stuck) -> np.ndarray:
+        """``p`` with the σ's of the ``stuck`` switches set to σ*, the values that make all their g_k vanish
+        (g is affine in σ: one linear system; the least-squares σ* where it is singular, e.g. g free of σ)."""
+        if not stuck:
+            return p
+        q = np.array(p, dtype=float)
+        idx = self.nparam + np.asarray(stuck)
+        q[idx] = 0.0
+        b = self.g(t_, y, q)[stuck]
+        A = np.empty((len(stuck), len(stuck)))
+        for j in range(len(stuck)):
+            q[idx] = 0.0
+            q[idx[j]] = 1.0
+            A[:, j] = self.g(t_, y, q)[stuck] - b
+        try:
+            q[idx] = np.linalg.solve(A, -b)
+        except np.linalg.LinAlgError:
+            q[idx] = np.linalg.lstsq(A, -b, rcond=None)[0]
+        return q
+
+    def decide(self, k, t_, y, p, stuck, eta) -> int:
+        """Filippov's rule for switch k on its surface (module docstring), the ``stuck`` others re-solved."""
+        gp, gm = (self.g(t_, y, self.solve_stuck(t_, y, _with(p, self.nparam + k, s), stuck))[k] for s in (1, -1))
+        if gp < gm:  # friction-like: |σ*| <= 1 + η means static friction can hold
+            # σ* exactly as the stick event will evaluate it, so that event starts at a value >= 0
+            s_star = self.solve_stuck(t_, y, p, sorted({*stuck, k}))[self.nparam + k]
+            return _STICK if abs(s_star) <= 1.0 + eta else int(math.copysign(1.0, s_star))
+        if gp > 0:
+            return 1
+        return -1 if gm < 0 else _STICK
+
+
+def _with(p, i, value):
+    q = np.array(p, dtype=float)
+    q[i] = value
+    return q
+
+
+def _initial_modes(sw: _Switched, t0, y0, eta) -> list:
+    scale = 1.0 + float(np.max(np.abs(y0)))
+    u0 = sw.u(t0, y0)
+    modes = [_STICK] * sw.K
+    p = np.concatenate([sw.model.params[: sw.nparam], np.ones(sw.K)])
+    for k in range(sw.K):
+        if abs(u0[k]) > 1e-9 * scale:
+            modes[k] = int(math.copysign(1.0, u0[k]))
+        else:
+            others = [j for j in range(k) if modes[j] == _STICK]
+            modes[k] = sw.decide(k, t0, y0, p, others, eta)
+        p[sw.nparam + k] = modes[k]
+    return modes
+
+
+def _segment_events(sw: _Switched, modes, params_at, eta) -> list:
+    """One terminal event per switch: ``u_k = 0`` crossed towards the surface while slipping,
+    ``|σ*_k| = 1 + η`` while stuck."""
+    events = []
+    for k, mode in enumerate(modes):
+        if mode == _STICK:
+            def ev(t_, z, k=k):
+                y = z[: sw.n2]
+                return 1.0 + eta - abs(params_at(t_, y)[sw.nparam + k])
+            ev.direction = -1.0
+        else:
+            def ev(t_, z, k=k):
+                return sw.u(t_, z[: sw.n2])[k]
+            ev.direction = -float(mode)
+        ev.terminal = True
+        events.append(ev)
+    return events
+
+
 def run_switched(model, switches, t_span, z0, t_eval, events, kwargs, with_work):
     """Integrate segment by segment with frozen switches (see the module docstring)."""
-    from ..codegen.numeric import compile_equations
-    from .run import _state_text
+    from .run import _collapse_error
 
-    eqs0 = model.equations
-    eqs, sigmas = switched_equations(eqs0, switches)
-    base = dict(zip(eqs0.parameters, model.params))
-    backend = model.backend if model.backend != "reference" else "python"
-    sw_model = compile_equations(eqs, {**base, **{s: 1.0 for s in sigmas}}, backend=backend)
-    n = eqs.n
-    n2 = 2 * n
-    K = len(switches)
-    ren = rename_map(eqs)
-    tt, ys, ps = numeric_arguments(eqs)  # switched eqs carry the σ's among their parameters
-    # switching functions may contain parameters (a belt speed): evaluated with the σ-free parameter values
-    p_u = np.concatenate([model.params, np.ones(K)])
-    u_raw = sp.lambdify((tt, ys, ps), [u.xreplace(ren) for u in switches], modules="math")
-    grads_raw = [
-        sp.lambdify((tt, ys, ps), [sp.diff(u, s).xreplace(ren) for s in (*eqs.q, *eqs.qd, t)], modules="math")
-        for u in switches
-    ]
-
-    def u_fn(t_, y):
-        return u_raw(t_, y, p_u)
-
-    grads = [lambda t_, y, _g=g: _g(t_, y, p_u) for g in grads_raw]
-    pw = None
-    if with_work:
-        pw = sp.lambdify((tt, ys, ps, list(eqs.multipliers)), eqs.jacobi_rate.xreplace(ren), modules="math",
-                         cse=True)
-    rhs = sw_model.rhs
-    nparam = len(eqs0.parameters)
-
-    def deriv(t_, y, p):
-        return np.asarray(rhs(t_, y, p), dtype=float)
-
-    def g_of(k, t_, y, p):
-        gr = grads[k](t_, list(y))
-        return float(np.dot(gr[:n2], deriv(t_, y, p)) + gr[n2])
-
-    def sliding_sigma(t_, y, p, k):
-        pm, pp = p.copy(), p.copy()
-        pm[nparam + k], pp[nparam + k] = -1.0, 1.0
-        gm, gp = g_of(k, t_, y, pm), g_of(k, t_, y, pp)
-        if gp == gm:
-            return None, gm, gp
-        return -1.0 - 2.0 * gm / (gp - gm), gm, gp
-
+    sw = _Switched(model, switches)
     t0, t1 = t_span
-    scale = 1.0 + float(np.max(np.abs(z0[:n2])))
-    tiny = 1e-9 * scale
-    out_t, out_z, out_sig = [], [], []
+    eta = max(float(kwargs.get("rtol", 1e-3)), 100 * np.finfo(float).eps)
+    pw = sw.power_function() if with_work else None
     user_events = list(events) if events is not None else []
-    t_events = [[] for _ in user_events]
-    y_events = [[] for _ in user_events]
-    nfev = 0
-    t_cur, z_cur = t0, np.array(z0, dtype=float)
-    sigma = np.ones(K)
-    sliding = [False] * K
-    segments = 0
-    while True:
-        segments += 1
-        if segments > _MAX_SEGMENTS:
-            raise IntegrationError(
-                f"more than {_MAX_SEGMENTS} friction switches before t={t_cur:.9g}: the motion chatters; "
-                "use friction='regularize'",
-                t=float(t_cur),
-            )
-        y = z_cur[:n2]
-        p = np.concatenate([model.params, sigma])
-        u = u_fn(t_cur, list(y))
-        for k in range(K):
-            if abs(u[k]) > tiny:
-                sigma[k], sliding[k] = math.copysign(1.0, u[k]), False
-                p[nparam + k] = sigma[k]
-                continue
-            p[nparam + k] = 1.0
-            gp = g_of(k, t_cur, y, p)
-            p[nparam + k] = -1.0
-            gm = g_of(k, t_cur, y, p)
-            if gp > 0 and not gm > 0:
-                sigma[k], sliding[k] = 1.0, False
-            elif gm < 0 and not gp < 0:
-                sigma[k], sliding[k] = -1.0, False
-            elif gp > 0 and gm > 0:
-                sigma[k], sliding[k] = 1.0, False
-            elif gp < 0 and gm < 0:
-                sigma[k], sliding[k] = -1.0, False
-            else:
-                sliding[k] = True
-            p[nparam + k] = sigma[k]
-        seg_sliding = list(sliding)
+    t_events, y_events = [[] for _ in user_events], [[] for _ in user_events]
+    out_t, out_z, out_sig = [], [], []
+    nfev, t_cur, z_cur = 0, t0, np.array(z0, dtype=float)
+    modes = _initial_modes(sw, t0, z_cur[: sw.n2], eta)
+    transitions = [Transition(float(t0), k, "", _MODE_NAMES[m]) for k, m in enumerate(modes)]
+    for _segment in range(_MAX_SEGMENTS):
+        stuck = [k for k in range(sw.K) if modes[k] == _STICK]
+        p = np.concatenate([sw.model.params[: sw.nparam], np.array(modes, dtype=float)])
 
-        def params_at(t_, y_, _p=p, _sl=seg_sliding):
-            if not any(_sl):
-                return _p
-            q = _p.copy()
-            for k in range(K):
-                if _sl[k]:
-                    s, _, _ = sliding_sigma(t_, y_, q, k)
-                    q[nparam + k] = 0.0 if s is None else max(-1.0, min(1.0, s))
-            return q
+        def params_at(t_, y_, _p=p, _stuck=stuck):
+            return sw.solve_stuck(t_, y_, _p, _stuck)
 
-        def f(t_, z, _pa=params_at):
-            y_ = z[:n2]
-            pp = _pa(t_, y_)
-            d = list(rhs(t_, y_, pp))
-            if pw is not None:
-                d.append(pw(t_, list(y_), list(pp), []))
-            s = sum(d)
-            if s != s or s in (math.inf, -math.inf):
-                raise IntegrationError(
-                    f"non-finite derivative at t={t_:.9g} ({_state_text(sw_model, z)})", t=float(t_)
-                )
-            return d
-
-        seg_events = []
-        for k in range(K):
-            if seg_sliding[k]:
-                def ev(t_, z, k=k, _pa=params_at):
-                    s, _, _ = sliding_sigma(t_, z[:n2], _pa(t_, z[:n2]), k)
-                    return 1.0 - abs(0.0 if s is None else s) - 1e-12
-            else:
-                def ev(t_, z, k=k):
-                    return u_fn(t_, list(z[:n2]))[k]
-                ev.direction = -sigma[k]
-            ev.terminal = True
-            seg_events.append(ev)
-        all_events = seg_events + user_events
         mask = (t_eval > t_cur) if out_t else (t_eval >= t_cur)
-        te = t_eval[mask & (t_eval <= t1)]
-        res = solve_ivp(f, (t_cur, t1), z_cur, t_eval=te, events=all_events or None, **kwargs)
+        res = solve_ivp(_segment_rhs(sw, params_at, pw), (t_cur, t1), z_cur, t_eval=t_eval[mask & (t_eval <= t1)],
+                        events=_segment_events(sw, modes, params_at, eta) + user_events or None, **kwargs)
         nfev += res.nfev
         if res.status == -1:
-            from .run import _collapse_error
-
-            raise _collapse_error(sw_model, res, t_cur, z_cur[:n2])
+            raise _collapse_error(sw.model, res, t_cur, z_cur[: sw.n2])
         ys = np.asarray(res.y, dtype=float).reshape(len(z_cur), len(res.t))  # [] when no t_eval point inside
         for ti, zi in zip(res.t, ys.T):
             out_t.append(ti)
             out_z.append(zi)
-            out_sig.append(params_at(ti, zi[:n2])[nparam:].copy())
-        if res.status == 0:
+            out_sig.append(params_at(ti, zi[: sw.n2])[sw.nparam:].copy())
+        fired, user_stop = _collect_events(res, sw.K, user_events, t_events, y_events)
+        if res.status == 0 or user_stop or fired is None:
             break
-        # which event fired?
-        fired = None
-        for j, tev in enumerate(res.t_events):
-            if len(tev):
-                if j >= K:
-                    t_events[j - K].extend(tev)
-                    y_events[j - K].extend(res.y_events[j])
-                    if getattr(user_events[j - K], "terminal", False):
-                        fired = "user"
-                else:
-                    fired = fired or ("switch", j, tev[-1], res.y_events[j][-1])
-        if fired == "user" or fired is None:
-            break
-        _, k, tev, zev = fired
-        t_cur, z_cur = float(tev), np.array(zev, dtype=float)
+        k, t_cur, z_cur = fired
+        y = z_cur[: sw.n2]
+        if modes[k] == _STICK:  # the friction needed exceeds (1 + η) μN: slip the way it pulls, no re-test
+            new = int(math.copysign(1.0, params_at(t_cur, y)[sw.nparam + k]))
+        else:
+            new = sw.decide(k, t_cur, y, p, [j for j in stuck if j != k], eta)
+        transitions.append(Transition(t_cur, k, _MODE_NAMES[modes[k]], _MODE_NAMES[new]))
+        modes[k] = new
         if t_cur >= t1:
             break
+    else:
+        raise IntegrationError(
+            f"more than {_MAX_SEGMENTS} friction switches before t={t_cur:.9g}: the motion chatters; "
+            "use friction='regularize'",
+            t=float(t_cur),
+        )
     T = np.array(out_t)
     Z = np.array(out_z).reshape(len(out_t), -1)
     res_obj = _Result(T, Z.T, nfev, t_events, y_events)
-    res_obj.sigma = np.array(out_sig).reshape(len(out_t), K)
-    res_obj.switched_model = sw_model
+    res_obj.sigma = np.array(out_sig).reshape(len(out_t), sw.K)
+    res_obj.switched_model = sw.model
+    res_obj.transitions = tuple(transitions)
     return res_obj
+
+
+def _segment_rhs(sw: _Switched, params_at, pw):
+    """The state derivative of one segment (plus the power of the non-conservative forces when ``pw``)."""
+    from .run import _state_text
+
+    n2, rhs = sw.n2, sw.model.rhs
+
+    def f(t_, z):
+        y_ = z[:n2]
+        pp = params_at(t_, y_)
+        d = list(rhs(t_, y_, pp))
+        if pw is not None:
+            d.append(pw(t_, list(y_), list(pp), []))
+        s = sum(d)
+        if s != s or s in (math.inf, -math.inf):
+            raise IntegrationError(f"non-finite derivative at t={t_:.9g} ({_state_text(sw.model, z)})", t=float(t_))
+        return d
+
+    return f
+
+
+def _collect_events(res, K, user_events, t_events, y_events):
+    """Record the user events of a segment; return ((k, t, z) of the switch event that ended it or None,
+    whether a terminal user event stopped the run)."""
+    fired, user_stop = None, False
+    for j, tev in enumerate(res.t_events or []):
+        if not len(tev):
+            continue
+        if j >= K:
+            t_events[j - K].extend(tev)
+            y_events[j - K].extend(res.y_events[j])
+            user_stop = user_stop or bool(getattr(user_events[j - K], "terminal", False))
+        elif fired is None:
+            fired = (j, float(tev[-1]), np.array(res.y_events[j][-1], dtype=float))
+    return fired, user_stop
 
 
 @dataclasses.dataclass
@@ -268,6 +329,7 @@ class _Result:
     success: bool = True
     sigma: np.ndarray | None = None
     switched_model: object = None
+    transitions: tuple = ()
 
     def __post_init__(self):
         self.t_events = [np.array(v) for v in self.t_events]

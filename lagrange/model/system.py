@@ -268,9 +268,11 @@ class System:
     # --- derived quantities (memoized; the System never changes) -------------------------------
     @cached_property
     def _equations(self) -> Equations:
+        # loaded from the on-disk derivation cache when this declaration was derived before (same versions)
+        from ..codegen.derivation_cache import cached_equations
         from ..derive.lagrange import lagrange_equations
 
-        return lagrange_equations(self)
+        return cached_equations(self, lagrange_equations)
 
     @property
     def derived(self) -> Equations:

@@ -45,6 +45,8 @@ class Trajectory:
     work : ndarray (m,) or None — ∫ dh/dt dt from t0, present when the system is not conservative
     initial : (t0, y0) — the initial state (output times need not include t0)
     t_events, y_events : lists from scipy (one entry per event function)
+    switches : dry friction with ``friction="events"``: (switched model, σ of every ``sign()`` at the output
+        times (m, K), every stick/slip mode change as :class:`lagrange.integrate.switching.Transition`)
     """
 
     t: np.ndarray
@@ -58,7 +60,7 @@ class Trajectory:
     t_events: list = field(default_factory=list)
     y_events: list = field(default_factory=list)
     initial: tuple = ()  # (t0, y0): the work integral starts there, whatever the output times
-    switches: tuple = ()  # (switched model, sigma array (m, K)) when sign() switches were integrated
+    switches: tuple = ()  # (switched model, sigma (m, K), Transition tuple) when sign() switches were integrated
     initial_constraint_violation: dict = field(default_factory=dict)  # user's state before projection
     point_params: np.ndarray | None = None  # per output point parameter vectors (rough-constraint signs)
 
@@ -105,7 +107,7 @@ class Trajectory:
         """q̈ at every output time, shape (m, n), from the model's right-hand side."""
         n = self.model.n
         if self.switches:
-            sw_model, sigma = self.switches
+            sw_model, sigma = self.switches[:2]
             rows = [sw_model.rhs(ti, yi, np.concatenate([self.model.params, si])).__getitem__(slice(n, None))
                     for ti, yi, si in zip(self.t, self.y, sigma)]
         else:

@@ -13,7 +13,7 @@ import sympy as sp
 
 from lagrange import System, coordinates, parameters, t
 from lagrange.bench.horizon import validity_horizon
-from lagrange.bench.problems import belt_state, belt_stick_interval, belt_system, damped_double_pendulum
+from lagrange.bench.problems import belt_state, belt_stick_interval, belt_system, damped_double_pendulum, get_problem
 from lagrange.examples import n_link_pendulum
 
 STIFF_IC = {"q1": 0.3, "q2": -0.2, "q1_dot": 0.0, "q2_dot": 0.0}
@@ -47,6 +47,73 @@ def test_belt_stick_slip_matches_closed_form(v0):
     assert ts[stuck].min() == pytest.approx(t1, abs=ts[1]) and ts[stuck].max() == pytest.approx(t2, abs=ts[1])
     assert np.count_nonzero(np.diff(stuck.astype(int)) == 1) == 1  # one stick phase, no chatter
     assert sol.nfev < 30_000
+
+
+def _belt_transitions_from_closed_form(t_end: float, v0: float = 0.5, belt: float = 0.2):
+    """The stick/slip mode changes of :func:`belt_state`: the initial slip, the stick at t1, the slip behind the
+    belt at t2; and the times t2 + 2πk where the limit cycle touches the belt speed (a tangency, which a run may
+    record as a stick of zero length: at most two more mode changes each)."""
+    t1, t2 = belt_stick_interval(v0=v0, belt=belt)
+    expected = [(0.0, "slip+" if v0 > belt else "slip-"), (t1, "stick"), (t2, "slip-")]
+    return expected, t2 + 2 * np.pi * np.arange(1, int((t_end - t2) / (2 * np.pi)) + 1)
+
+
+@pytest.mark.parametrize("method, rtol", [("DOP853", 1e-8), ("DOP853", 1e-10), ("DOP853", 1e-12), ("RK45", 1e-12),
+                                          ("Radau", 1e-12), ("LSODA", 1e-12)])
+def test_belt_stick_slip_at_tight_tolerances(method, rtol):
+    """The benchmark's stick-slip problem (issue #7) at tight tolerances. DOP853 at rtol 1e-12 used to chatter
+    at the end of the stick (100,000 switches at t = 2.1075: the end-of-stick event fired where static friction
+    could still hold by 1e-12, Filippov's test re-entered sticking and the new stick's event fired again at
+    the same instant; Radau did the same at 1e-10). Now: the closed form to O(rtol), and only the physical
+    mode changes, at their closed-form times."""
+    prob = get_problem("stick_slip")
+    ts = np.asarray(prob.sample_times)
+    sol = prob.build().simulate((0.0, prob.t_end), prob.initial, prob.params, method=method, rtol=rtol,
+                                atol=rtol * prob.atol_scale, t_eval=ts, **prob.options)
+    assert np.max(np.abs(sol.y - belt_state(ts))) < 100 * rtol
+    expected, tangencies = _belt_transitions_from_closed_form(prob.t_end)
+    transitions = sol.switches[2]
+    assert [tr.after for tr in transitions[:3]] == [mode for _, mode in expected]
+    assert np.allclose([tr.t for tr in transitions[:3]], [t_ for t_, _ in expected], rtol=0, atol=100 * rtol)
+    extra = transitions[3:]  # zero-length sticks where the limit cycle grazes the belt speed, nothing else
+    assert len(extra) <= 2 * len(tangencies)
+    assert all(np.min(np.abs(tangencies - tr.t)) < 0.01 for tr in extra)
+
+
+def test_friction_loaded_exactly_to_its_limit_stays_stuck():
+    """A block at rest on an incline at exactly the friction angle (driving force = μmg): static friction holds
+    it (up to the hysteresis η = rtol of lagrange.integrate.switching). Without the hysteresis the end-of-stick
+    test compares 1 − |σ*| = 0 with 0 at every step and the run chatters at t = 0."""
+    x = coordinates("x")
+    m, mu, g = parameters("m mu g")
+    s = System([x], T=m * x.diff(t) ** 2 / 2, forces={x: mu * m * g - mu * m * g * sp.sign(x.diff(t))})
+    for rtol in (1e-6, 1e-12):
+        sol = s.simulate(50, {"x": 0.0, "x_dot": 0.0}, {"m": 1, "mu": 0.3, "g": 9.81}, rtol=rtol, atol=rtol,
+                         t_eval=np.linspace(0, 50, 11))
+        assert np.all(sol.y == 0.0)
+        assert [tr.after for tr in sol.switches[2]] == ["stick"]
+        assert np.allclose(sol.switches[1], 1.0)  # the static friction needed: all of μmg
+
+
+def test_two_contacts_stuck_together_are_solved_jointly():
+    """Two friction contacts whose slip velocities u1 = ȧ − vb, u2 = ȧ + ḃ − vb share a coordinate (the
+    matrix ∂u M⁻¹ ∂uᵀ is [[2, 1], [1, 1]]/m, not diagonal). Starting with both at the belt speed, both stay stuck
+    (a = vb t, b = 0) while the friction each needs — σ1 = −k a/(μmg), σ2 = 0 — is available, so contact 1
+    slips first at t = μmg/(k vb) = 2.5. Solving the σ* one contact at a time with the other's σ frozen at ±1
+    started the block moving at t = 0."""
+    a, b = coordinates("a b")
+    m, k, mu, g = parameters("m k mu g")
+    vb = sp.Rational(1, 5)
+    ad, bd = a.diff(t), b.diff(t)
+    s = System([a, b], T=m * ad**2 / 2 + m * bd**2 / 2, V=k * a**2 / 2 + k * b**2 / 2,
+               P=-mu * m * g * (sp.Abs(ad - vb) + sp.Abs(ad + bd - vb)))
+    ts = np.linspace(0, 2.4, 25)
+    sol = s.simulate(3, {"a": 0.0, "b": 0.0, "a_dot": 0.2, "b_dot": 0.0}, {"m": 1, "k": 1, "mu": 0.5, "g": 1},
+                     t_eval=ts, method="DOP853", rtol=1e-10, atol=1e-12)
+    assert np.allclose(sol.y, np.column_stack([0.2 * ts, 0 * ts, 0.2 + 0 * ts, 0 * ts]), rtol=0, atol=1e-9)
+    assert np.allclose(sol.switches[1], np.column_stack([-0.4 * ts, 0 * ts]), rtol=0, atol=1e-9)
+    assert [(tr.switch, tr.after) for tr in sol.switches[2]] == [(0, "stick"), (1, "stick"), (0, "slip-")]
+    assert sol.switches[2][-1].t == pytest.approx(2.5, abs=1e-8)
 
 
 def test_regularized_friction_converges_to_the_stick_slip_cycle():

@@ -1,0 +1,267 @@
+"""The derivation cache: derived equations and generated source on disk, so a re-run of the same declared
+model in a fresh process skips both the sympy derivation and the code generation (CSE, printing).
+
+Two kinds of entry live in :func:`~lagrange.codegen.numba_backend.cache_dir` (``$LAGRANGE_CACHE_DIR``,
+else ``~/.cache/lagrange``), next to the numba modules:
+
+``derived_<key>.pkl``
+    the pickled :class:`~lagrange.derive.equations.Equations` of a :class:`~lagrange.System`, under
+    :func:`declaration_key`: a SHA-256 of the ``srepr`` of everything the derivation reads from the
+    declaration (coordinates with their assumptions, T, V, P, the Rayleigh function, the generalized
+    forces, the constraints, prescribed motions, declared parameters, name) and of :func:`environment`;
+``source_<key>.txt``
+    the generated source of one backend, under a SHA-256 of the ``srepr`` of the whole ``Equations``
+    (:func:`equations_fingerprint`: content-addressed, so equations built any other way hit exactly when
+    their content is the same), the code generator's options and :func:`environment`.
+
+:func:`environment` names the entry format, the lagrange version *and a hash of the source files of the
+stages that make the entries* (:data:`SOURCES`: an edited checkout never reuses an entry made by other
+code), the sympy and Python versions and the machine. Each entry starts with one header line holding its
+key, the SHA-256 of its payload and the environment; an entry whose header does not match (damaged,
+truncated, renamed, or written by other versions) is ignored and rebuilt, so a stale or damaged entry
+never gives a wrong answer. Writes are atomic (:func:`~lagrange.codegen.numba_backend.atomic_write`). A
+declaration holding a sympy class defined outside sympy and lagrange (a user's ``Function`` subclass: its
+behaviour is not in its ``srepr``) is never cached. Entries are pickles: like the generated modules next to
+them, the cache directory must be writable by you only.
+
+Set ``LAGRANGE_DERIVATION_CACHE=0`` (or ``off``, ``false``, ``no``) to turn the cache off: every run then
+derives and generates afresh and writes no entry. The numba backend still writes its module (numba needs a
+file to cache the compiled code).
+"""
+
+from __future__ import annotations
+
+import hashlib
+import os
+import pickle
+import platform
+import sys
+import weakref
+from collections.abc import Callable
+from dataclasses import fields
+from functools import lru_cache
+from pathlib import Path
+
+import sympy as sp
+from sympy.core.function import UndefinedFunction
+from sympy.printing.repr import ReprPrinter
+
+from ..derive.equations import Equations
+from .numba_backend import atomic_write, cache_dir
+
+__all__ = ["ENV_VAR", "enabled", "environment", "declaration_key", "equations_fingerprint", "cached_equations",
+           "cached_source"]
+
+#: environment variable that turns the cache off (``0``, ``off``, ``false``, ``no``)
+ENV_VAR = "LAGRANGE_DERIVATION_CACHE"
+_FORMAT = 1
+_OFF = ("0", "off", "false", "no")
+#: System attributes that are not in the key, and why (tests check every other attribute is keyed)
+UNKEYED_ATTRIBUTES = {
+    "bodies": "their kinetic energy is in T and their constraints in constraints",
+    "T_given": "part of T",
+    "description": "text only",
+}
+
+
+def enabled() -> bool:
+    """False when ``$LAGRANGE_DERIVATION_CACHE`` is ``0``, ``off``, ``false`` or ``no`` (read at each use)."""
+    return os.environ.get(ENV_VAR, "").strip().lower() not in _OFF
+
+
+#: the parts of lagrange that make the entries (the stages before integration): their source is hashed
+SOURCES = ("conventions.py", "model", "derive", "codegen")
+
+
+@lru_cache(maxsize=1)
+def _source_digest() -> str:
+    """SHA-256 of the ``.py`` files (paths and bytes) of :data:`SOURCES`, once per process."""
+    root = Path(__file__).resolve().parents[1]
+    h = hashlib.sha256()
+    for part in SOURCES:
+        for path in sorted([root / part] if part.endswith(".py") else (root / part).rglob("*.py")):
+            h.update(path.relative_to(root).as_posix().encode() + b"\0" + path.read_bytes() + b"\0")
+    return h.hexdigest()
+
+
+def environment() -> str:
+    """Everything besides the model that an entry depends on: the entry format, the lagrange version and
+    the hash of its source files, the sympy and Python versions and the machine (one line)."""
+    version = getattr(sys.modules.get("lagrange"), "__version__", "unknown")
+    text = (f"format {_FORMAT}; lagrange {version} source {_source_digest()[:20]}; sympy {sp.__version__}; "
+            f"python {sys.version}; {platform.machine()}")
+    return " ".join(text.split())
+
+
+class _Uncacheable(Exception):
+    """A sympy class whose behaviour the ``srepr`` does not pin down."""
+
+
+def _known(cls: type) -> bool:
+    return isinstance(cls, UndefinedFunction) or (cls.__module__ or "").split(".")[0] in ("sympy", "lagrange")
+
+
+class _KeyPrinter(ReprPrinter):
+    """``srepr`` that also prints the assumptions of undefined functions (plain ``srepr`` drops them:
+    ``Function('x', real=True)`` and ``Function('x')`` print alike) and refuses unknown sympy classes."""
+
+    def _print(self, expr, **kwargs):
+        if isinstance(expr, sp.Basic) and not _known(type(expr)):
+            raise _Uncacheable(type(expr).__qualname__)
+        return super()._print(expr, **kwargs)
+
+    def _print_UndefinedFunction(self, expr) -> str:
+        return f"Function({expr.__name__!r}, {sorted(getattr(expr, '_kwargs', {}).items())!r})"
+
+
+def _digest(*parts: str) -> str:
+    return hashlib.sha256("\0".join(parts).encode()).hexdigest()[:32]
+
+
+def _text(obj) -> str | None:
+    """The key text of ``obj`` (nested tuples of sympy objects, strings, bools, None), or None when it
+    holds a sympy class defined outside sympy and lagrange."""
+    try:
+        return _KeyPrinter().doprint(obj)
+    except _Uncacheable:
+        return None
+
+
+def _declaration(system) -> tuple:
+    """``(attribute name, value)`` of everything :func:`lagrange.derive.lagrange.lagrange_equations` can read
+    from ``system`` (dictionaries as tuples sorted by key, constraints as tuples of their fields)."""
+    declared = system._declared_parameters
+    return (
+        ("coordinates", tuple(system.coordinates)),
+        ("T", system.T), ("V", system.V), ("P", system.P), ("rayleigh", system.rayleigh),
+        ("forces", tuple(sorted(system.forces.items(), key=lambda kv: str(kv[0])))),
+        ("constraints", tuple(tuple((f.name, getattr(c, f.name)) for f in fields(c)) for c in system.constraints)),
+        ("prescribed", tuple(sorted(system.prescribed.items(), key=lambda kv: str(kv[0])))),
+        ("_declared_parameters", None if declared is None else tuple(sorted(declared, key=str))),
+        ("name", system.name),
+    )
+
+
+def declaration_key(system) -> str | None:
+    """The key of ``system``'s derivation entry: a SHA-256 over the ``srepr`` of its declaration (every
+    attribute the derivation reads) and :func:`environment`; None when the declaration cannot be cached.
+
+    >>> import lagrange as lg
+    >>> x = lg.coordinates("x"); m, k = lg.parameters("m k")
+    >>> a = lg.System([x], T=m * x.diff(lg.t)**2 / 2, V=k * x**2 / 2)
+    >>> b = lg.System([x], T=m * x.diff(lg.t)**2 / 2, V=k * x**2)
+    >>> declaration_key(a) == declaration_key(lg.System([x], T=m * x.diff(lg.t)**2 / 2, V=k * x**2 / 2))
+    True
+    >>> declaration_key(a) == declaration_key(b)
+    False
+    """
+    text = _text(_declaration(system))
+    return None if text is None else _digest("derived", text, environment())
+
+
+_FINGERPRINTS: dict[int, tuple[weakref.ref, str | None]] = {}
+
+
+def _remember(eqs: Equations, fingerprint: str | None) -> str | None:
+    key = id(eqs)
+    _FINGERPRINTS[key] = (weakref.ref(eqs, lambda _ref: _FINGERPRINTS.pop(key, None)), fingerprint)
+    return fingerprint
+
+
+def equations_fingerprint(eqs: Equations) -> str | None:
+    """SHA-256 of the ``srepr`` of every field of ``eqs`` (None when it holds an unknown sympy class).
+
+    Memoized per object; equations loaded from the cache come with the fingerprint stored in their entry,
+    so a warm run does not print them again.
+    """
+    known = _FINGERPRINTS.get(id(eqs))
+    if known is not None and known[0]() is eqs:
+        return known[1]
+    text = _text(tuple((f.name, getattr(eqs, f.name)) for f in fields(eqs)))
+    return _remember(eqs, None if text is None else _digest("equations", text))
+
+
+def _entry_path(kind: str, key: str, suffix: str) -> Path | None:
+    try:
+        return cache_dir() / f"{kind}_{key}{suffix}"
+    except OSError:  # no usable cache directory: run uncached
+        return None
+
+
+def _header(key: str, payload: bytes) -> bytes:
+    return f"lagrange-cache {key} sha256 {hashlib.sha256(payload).hexdigest()} {environment()}".encode()
+
+
+def _read(path: Path | None, key: str) -> bytes | None:
+    """The payload of the entry at ``path``, or None when it is missing or its header does not match
+    (damaged, truncated, another key, another environment)."""
+    if path is None:
+        return None
+    try:
+        data = path.read_bytes()
+    except OSError:
+        return None
+    head, newline, payload = data.partition(b"\n")
+    return payload if newline and head == _header(key, payload) else None
+
+
+def _write(path: Path | None, key: str, payload: bytes) -> None:
+    """Store an entry atomically; a cache that cannot be written is skipped (it only saves time)."""
+    if path is not None:
+        try:
+            atomic_write(path, _header(key, payload) + b"\n" + payload)
+        except OSError:
+            pass
+
+
+def cached_equations(system, derive: Callable) -> Equations:
+    """``derive(system)``, loaded from the derivation cache when an intact entry made by the same
+    declaration and :func:`environment` exists, else derived and stored.
+
+    Parameters
+    ----------
+    system : System
+    derive : callable ``System -> Equations`` (:func:`lagrange.derive.lagrange.lagrange_equations`)
+    """
+    key = declaration_key(system) if enabled() else None
+    if key is None:
+        return derive(system)
+    path = _entry_path("derived", key, ".pkl")
+    payload = _read(path, key)
+    if payload is not None:
+        try:
+            eqs, fingerprint = pickle.loads(payload)  # noqa: S301 - our own entry, checksummed
+        except Exception:  # noqa: BLE001 - an entry that does not load is rebuilt
+            eqs = fingerprint = None
+        if isinstance(eqs, Equations) and isinstance(fingerprint, str) and eqs.coordinates == system.coordinates:
+            _remember(eqs, fingerprint)
+            return eqs
+    eqs = derive(system)
+    fingerprint = equations_fingerprint(eqs)
+    if fingerprint is not None:
+        try:
+            payload = pickle.dumps((eqs, fingerprint), protocol=pickle.HIGHEST_PROTOCOL)
+        except Exception:  # noqa: BLE001 - something in the equations does not pickle: not cached
+            return eqs
+        _write(path, key, payload)
+    return eqs
+
+
+def cached_source(eqs: Equations, options: str, generate: Callable[[], str]) -> str:
+    """``generate()``, the generated source for ``eqs`` with code-generator ``options`` (a string naming
+    the backend flavour and anything else that changes the text), loaded from the cache when an intact
+    entry exists, else generated and stored."""
+    fingerprint = equations_fingerprint(eqs) if enabled() else None
+    if fingerprint is None:
+        return generate()
+    key = _digest("source", fingerprint, options, environment())
+    path = _entry_path("source", key, ".txt")
+    payload = _read(path, key)
+    if payload is not None:
+        try:
+            return payload.decode("utf-8")
+        except UnicodeDecodeError:
+            pass
+    source = generate()
+    _write(path, key, source.encode("utf-8"))
+    return source

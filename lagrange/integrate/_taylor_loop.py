@@ -1,0 +1,326 @@
+r"""The compiled Taylor integrator: an interpreter of a model's tape, compiled once per machine.
+
+A model's right-hand side comes as a *tape* (:mod:`lagrange.codegen.tape`): a straight-line list of
+elementary operations on numbered slots. Each slot holds a truncated Taylor series in time,
+``S[slot, k]`` = the k-th normalized derivative ``x^{[k]} = x^{(k)}(t)/k!``. Evaluating the tape at order
+``k`` computes coefficient ``k`` of every slot from the coefficients ``0..k`` of its operands by the
+classic recurrences of automatic differentiation (Moore; Jorba & Zou, *Experimental Mathematics* 14 (2005)
+99–117; Hairer, Nørsett & Wanner, *Solving ODEs I*, §I.8)::
+
+    c = a·b      c_k = Σ_{j=0..k} a_j b_{k−j}
+    c = a/b      c_k = (a_k − Σ_{j=1..k} b_j c_{k−j}) / b_0
+    e = exp(u)   e_k = (1/k) Σ_{j=1..k} j u_j e_{k−j}
+    l = log(u)   l_k = (u_k − (1/k) Σ_{j=1..k−1} j l_j u_{k−j}) / u_0
+    s = sin(u), c = cos(u)
+                 s_k = (1/k) Σ_{j=1..k} j u_j c_{k−j},   c_k = −(1/k) Σ_{j=1..k} j u_j s_{k−j}
+    w = u^α      w_k = (1/(k u_0)) Σ_{j=0..k−1} (α(k−j) − j) u_{k−j} w_j
+
+The state is ``z = [q, v(, work)]`` with ``q' = v``, ``M(q, v, t) v' = f(q, v, t)`` and ``work' = P``. The
+linear solve is done order by order: with ``a = v'``, ``M a = f`` gives
+
+    M_0 a_k = f_k − Σ_{j=1..k} M_j a_{k−j},
+
+one LDLᵀ factorization of ``M_0`` per step and one solve per order; then ``q_{k+1} = v_k/(k+1)``,
+``v_{k+1} = a_k/(k+1)``, ``work_{k+1} = P_k/(k+1)``.
+
+Order and step (Jorba & Zou 2005, as in heyoka): with tolerance ε the order is
+``p = ceil(−ln(ε)/2 + 1)``, and the step is ``h = ρ/e² · exp(−0.7/(p−1))`` with
+``ρ = min_{k ∈ {p−1, p}} (N/‖z^{[k]}‖∞)^{1/k}`` and ``N = max(A, ‖z^{[0]}‖∞)``: an absolute criterion for
+small states and a relative one for large states (``A = atol/rtol``; A = 1 is Jorba & Zou's mixed
+criterion). There are no rejected steps. The output at ``t_eval`` is the Taylor polynomial of the step
+that contains it (the dense output is exact to the order of the method), so steps are never clipped to
+output times.
+
+The entry points :func:`taylor` (the interpreter) and :func:`taylor_fn` (a compiled series) are compiled on
+request through :func:`entry`.
+
+The tape's instructions are rows ``(op, a, b, out)`` of an int64 array with one float64 constant each;
+*constant* instructions (parameters, numbers and what depends on them only) run once per integration at
+order 0, and their higher coefficients stay zero; the others run at every order of every step.
+
+This file must stay self-contained (absolute imports of numpy and numba only): it is imported as a copy in
+the cache directory (like :mod:`lagrange.integrate._rk_loops`).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit, types
+from numba.core.types import FunctionType
+
+# opcodes (lagrange.codegen.tape uses the same numbers)
+LOADC, LOADP, ADD, ADDC, SUB, SUBVC, SUBCV, MUL, MULC, DIV, DIVVC, DIVCV, NEG, SINCOS, EXP, LOG, POW = range(17)
+
+_I2 = types.int64[:, ::1]
+_F1 = types.float64[::1]
+_I1 = types.int64[::1]
+#: ``(status, t reached, z reached, Y, n_out, steps)``
+TAYLOR = types.Tuple((types.int64, types.float64, _F1, types.float64[:, ::1], types.int64, types.int64))(
+    _I2, _F1, _I2, _F1, types.int64, types.int64, types.int64, _I2, _I1, types.int64, types.int64,
+    types.float64, types.float64, _F1, _F1, types.float64, types.float64, types.int64, types.float64, _F1,
+    types.int64)
+_F2 = types.float64[:, ::1]
+#: a model's compiled ``series(t, S, acc, L, d, Mk, r, p_order) -> ok`` (lagrange.codegen.taylor_source)
+SERIES = types.boolean(types.float64, _F2, _F2, _F2, _F1, _F2, _F1, types.int64)
+TAYLOR_FN = TAYLOR.return_type(FunctionType(SERIES), _I2, _F1, types.int64, types.int64, types.int64, types.float64,
+                               types.float64, _F1, _F1, types.float64, types.float64, types.int64, types.float64,
+                               _F1, types.int64)
+
+
+@njit(cache=True, error_model="numpy", inline="always")
+def _coefficient(op: int, a: int, b: int, o: int, c: float, S, k: int) -> None:
+    """Coefficient ``k`` of slot ``o`` (see the module docstring); ``S[:, :k]`` is known."""
+    if op == MUL:
+        s = 0.0
+        for j in range(k + 1):
+            s += S[a, j] * S[b, k - j]
+        S[o, k] = s
+    elif op == ADD:
+        S[o, k] = S[a, k] + S[b, k]
+    elif op == MULC:
+        S[o, k] = S[a, k] * S[b, 0]
+    elif op == SUB:
+        S[o, k] = S[a, k] - S[b, k]
+    elif op == ADDC:
+        S[o, k] = S[a, k] + S[b, 0] if k == 0 else S[a, k]
+    elif op == SUBVC:
+        S[o, k] = S[a, k] - S[b, 0] if k == 0 else S[a, k]
+    elif op == SUBCV:
+        S[o, k] = S[a, 0] - S[b, 0] if k == 0 else -S[b, k]
+    elif op == NEG:
+        S[o, k] = -S[a, k]
+    elif op == DIVVC:
+        S[o, k] = S[a, k] / S[b, 0]
+    elif op == DIV or op == DIVCV:
+        s = S[a, k] if (op == DIV or k == 0) else 0.0
+        for j in range(1, k + 1):
+            s -= S[b, j] * S[o, k - j]
+        S[o, k] = s / S[b, 0]
+    elif op == SINCOS:  # o = sin(a), b = cos(a)
+        if k == 0:
+            S[o, 0] = math.sin(S[a, 0])
+            S[b, 0] = math.cos(S[a, 0])
+        else:
+            s = 0.0
+            cc = 0.0
+            for j in range(1, k + 1):
+                s += j * S[a, j] * S[b, k - j]
+                cc += j * S[a, j] * S[o, k - j]
+            S[o, k] = s / k
+            S[b, k] = -cc / k
+    elif op == EXP:
+        if k == 0:
+            S[o, 0] = math.exp(S[a, 0])
+        else:
+            s = 0.0
+            for j in range(1, k + 1):
+                s += j * S[a, j] * S[o, k - j]
+            S[o, k] = s / k
+    elif op == LOG:
+        if k == 0:
+            S[o, 0] = math.log(S[a, 0]) if S[a, 0] > 0.0 else math.nan
+        else:
+            s = 0.0
+            for j in range(1, k):
+                s += j * S[o, j] * S[a, k - j]
+            S[o, k] = (S[a, k] - s / k) / S[a, 0]
+    elif op == POW:
+        if k == 0:
+            S[o, 0] = S[a, 0] ** c
+        else:
+            s = 0.0
+            for j in range(k):
+                s += (c * (k - j) - j) * S[a, k - j] * S[o, j]
+            S[o, k] = s / (k * S[a, 0])
+    elif op == LOADC:
+        S[o, 0] = c
+
+
+@njit(cache=True, error_model="numpy")
+def _ldl(n: int, mass, S, Mk, L, d) -> bool:
+    """LDLᵀ of M_0 (upper slots ``mass``, −1 = structural zero) into unit-lower ``L`` and ``d``; False when a
+    pivot is not positive relative to its diagonal entry (1e-13), as in the generated code."""
+    for i in range(n):
+        for j in range(n):
+            s = mass[min(i, j), max(i, j)]
+            Mk[i, j] = S[s, 0] if s >= 0 else 0.0
+    for j in range(n):
+        dj = Mk[j, j]
+        for k in range(j):
+            dj -= L[j, k] * L[j, k] * d[k]
+        if not (dj > 1e-13 * abs(Mk[j, j])):
+            return False
+        d[j] = dj
+        L[j, j] = 1.0
+        for i in range(j + 1, n):
+            s = Mk[i, j]
+            for k in range(j):
+                s -= L[i, k] * L[j, k] * d[k]
+            L[i, j] = s / dj
+    return True
+
+
+@njit(cache=True, error_model="numpy")
+def _series(code, consts, n, nz, slot_t, slot_w, mass, force, power, p_order, t, S, acc, L, d, Mk, r) -> bool:
+    """Taylor coefficients ``0..p_order`` of the state slots ``0..nz−1`` at time t (``S[:nz, 0]`` set)."""
+    n_ins = code.shape[0]
+    S[slot_t, 0] = t
+    S[slot_t, 1] = 1.0
+    for k in range(p_order):
+        for i in range(n_ins):
+            _coefficient(code[i, 0], code[i, 1], code[i, 2], code[i, 3], consts[i], S, k)
+        if k == 0 and not _ldl(n, mass, S, Mk, L, d):
+            return False
+        for i in range(n):  # r = f_k − Σ_{j=1..k} M_j a_{k−j}
+            s = S[force[i], k]
+            for l_ in range(n):
+                m = mass[min(i, l_), max(i, l_)]
+                if m >= 0:
+                    for j in range(1, k + 1):
+                        s -= S[m, j] * acc[l_, k - j]
+            r[i] = s
+        for i in range(n):  # L D Lᵀ a_k = r
+            s = r[i]
+            for j in range(i):
+                s -= L[i, j] * r[j]
+            r[i] = s
+        for i in range(n - 1, -1, -1):
+            s = r[i] / d[i]
+            for j in range(i + 1, n):
+                s -= L[j, i] * acc[j, k]
+            acc[i, k] = s
+        for i in range(n):
+            S[i, k + 1] = S[n + i, k] / (k + 1)
+            S[n + i, k + 1] = acc[i, k] / (k + 1)
+        if slot_w >= 0:
+            S[slot_w, k + 1] = S[power, k] / (k + 1)
+    return True
+
+
+@njit(cache=True, error_model="numpy")
+def _horner(S, nz: int, p_order: int, x: float, out) -> None:
+    for i in range(nz):
+        v = S[i, p_order]
+        for k in range(p_order - 1, -1, -1):
+            v = v * x + S[i, k]
+        out[i] = v
+
+
+@njit(cache=True, error_model="numpy")
+def _step_size(S, nz: int, p_order: int, floor: float) -> float:
+    """Jorba & Zou's step: ρ/e² · exp(−0.7/(p−1)), ρ from the last two orders (module docstring)."""
+    n0 = 0.0
+    n1 = 0.0
+    n2 = 0.0
+    for i in range(nz):
+        n0 = max(n0, abs(S[i, 0]))
+        n1 = max(n1, abs(S[i, p_order - 1]))
+        n2 = max(n2, abs(S[i, p_order]))
+    scale = max(floor, n0)
+    rho = math.inf
+    if n1 > 0.0:
+        rho = (scale / n1) ** (1.0 / (p_order - 1))
+    if n2 > 0.0:
+        rho = min(rho, (scale / n2) ** (1.0 / p_order))
+    return rho / (math.e * math.e) * math.exp(-0.7 / (p_order - 1))
+
+
+@njit(cache=True, error_model="numpy")
+def _constants(const_code, const_vals, n_slots, n, p_order, p):
+    """The work arrays ``(S, acc, L, d, Mk, r)`` with the constant instructions evaluated into ``S[:, 0]``."""
+    S = np.zeros((n_slots, p_order + 1))
+    for i in range(const_code.shape[0]):
+        if const_code[i, 0] == LOADP:
+            S[const_code[i, 3], 0] = p[const_code[i, 1]]
+        else:
+            _coefficient(const_code[i, 0], const_code[i, 1], const_code[i, 2], const_code[i, 3], const_vals[i],
+                         S, 0)
+    return S, np.zeros((n, p_order + 1)), np.zeros((n, n)), np.zeros(n), np.zeros((n, n)), np.zeros(n)
+
+
+@njit(cache=True, error_model="numpy", inline="always")
+def _advance(S, nz, p_order, floor, max_step, t, t1, direction, t_eval, n_out, Y, z):
+    """After the series at ``t``: check it, take Jorba & Zou's step (writing outputs at ``t_eval`` in it and the
+    new state into ``z``); ``(status, t_new, n_out)``."""
+    for i in range(nz):
+        for k in range(p_order + 1):
+            if not math.isfinite(S[i, k]):
+                return 2, t, n_out
+    h_abs = min(_step_size(S, nz, p_order, floor), max_step)
+    if not (h_abs >= 10.0 * abs(np.nextafter(t, direction * np.inf) - t)):
+        return 1, t, n_out
+    t_new = t + direction * h_abs
+    if direction * (t_new - t1) >= 0.0:
+        t_new = t1
+    while n_out < t_eval.size and direction * (t_eval[n_out] - t_new) <= 0.0:
+        _horner(S, nz, p_order, t_eval[n_out] - t, Y[n_out])
+        n_out += 1
+    _horner(S, nz, p_order, t_new - t, z)
+    return 0, t_new, n_out
+
+
+def taylor(const_code, const_vals, code, consts, n_slots, n, nz, mass, force, power, slot_t, t0, t1, z0, p,
+           tol, floor, p_order, max_step, t_eval, max_steps):
+    """Integrate from ``(t0, z0)`` to ``t1``, interpreting the tape; outputs at ``t_eval`` (sorted in the
+    direction of integration).
+
+    ``const_code``/``const_vals``: instructions run once at order 0 (``LOADP`` reads ``p[a]``);
+    ``code``/``consts``: the state-dependent instructions; slots ``0..nz−1`` are the state (``nz = 2n`` or
+    ``2n + 1`` with the work integral, ``power`` its rate's slot), ``slot_t`` the time, ``mass`` (n, n) the
+    upper triangle of M (−1 = zero), ``force`` the slots of f. ``tol``, ``floor``, ``p_order``: ε, A and p
+    of the module docstring. Status codes as :class:`lagrange.integrate.compiled.LoopStatus`.
+    """
+    S, acc, L, d, Mk, r = _constants(const_code, const_vals, n_slots, n, p_order, p)
+    z = z0.copy()
+    Y = np.empty((t_eval.size, nz))
+    slot_w = 2 * n if nz > 2 * n else -1
+    direction = 1.0 if t1 >= t0 else -1.0
+    t, n_out, steps = t0, 0, 0
+    while direction * (t - t1) < 0.0:
+        if steps >= max_steps:
+            return 4, t, z, Y, n_out, steps
+        S[:nz, 0] = z
+        if not _series(code, consts, n, nz, slot_t, slot_w, mass, force, power, p_order, t, S, acc, L, d, Mk, r):
+            return 3, t, z, Y, n_out, steps
+        status, t, n_out = _advance(S, nz, p_order, floor, max_step, t, t1, direction, t_eval, n_out, Y, z)
+        if status != 0:
+            return status, t, z, Y, n_out, steps
+        steps += 1
+    return 0, t, z, Y, n_out, steps
+
+
+def taylor_fn(series, const_code, const_vals, n_slots, n, nz, t0, t1, z0, p, tol, floor, p_order, max_step, t_eval,
+              max_steps):
+    """:func:`taylor` with the model's compiled ``series`` (:mod:`lagrange.codegen.taylor_source`) instead of
+    the interpreter; same results."""
+    S, acc, L, d, Mk, r = _constants(const_code, const_vals, n_slots, n, p_order, p)
+    z = z0.copy()
+    Y = np.empty((t_eval.size, nz))
+    direction = 1.0 if t1 >= t0 else -1.0
+    t, n_out, steps = t0, 0, 0
+    while direction * (t - t1) < 0.0:
+        if steps >= max_steps:
+            return 4, t, z, Y, n_out, steps
+        S[:nz, 0] = z
+        if not series(t, S, acc, L, d, Mk, r, p_order):
+            return 3, t, z, Y, n_out, steps
+        status, t, n_out = _advance(S, nz, p_order, floor, max_step, t, t1, direction, t_eval, n_out, Y, z)
+        if status != 0:
+            return status, t, z, Y, n_out, steps
+        steps += 1
+    return 0, t, z, Y, n_out, steps
+
+
+_SIGNATURES = {"taylor": TAYLOR, "taylor_fn": TAYLOR_FN}
+_ENTRIES: dict = {}
+
+
+def entry(name: str):
+    """The compiled entry point ``name`` (``"taylor"`` or ``"taylor_fn"``), compiled for its signature — or
+    loaded from numba's cache — on first request: loading a cached entry costs about 0.2 s, so a process pays
+    only for the entry it uses."""
+    if name not in _ENTRIES:
+        _ENTRIES[name] = njit(_SIGNATURES[name], cache=True, error_model="numpy")(globals()[name])
+    return _ENTRIES[name]

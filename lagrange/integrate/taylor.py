@@ -1,0 +1,143 @@
+r"""``simulate(..., method="taylor")``: an adaptive Taylor integrator with no per-model compilation.
+
+The model's right-hand side is translated into a tape (:mod:`lagrange.codegen.tape`, milliseconds) and
+run by an interpreter compiled once per machine (:mod:`lagrange.integrate._taylor_loop`, cached on disk
+like the DOP853/RK45 loops): the time to a first result is the derivation, the tape and the integration —
+nothing is generated or JIT-compiled per model. Taylor coefficients come from automatic differentiation
+(each instruction of order k costs O(k), which amortizes the interpretation), the order follows the
+tolerance (``p = ceil(−ln(rtol)/2 + 1)``: 13 at 1e-10, 20 at machine precision) and the step follows the
+last two coefficients (Jorba & Zou 2005, the scheme heyoka uses), so there are no rejected steps and the
+output at ``t_eval`` is the Taylor polynomial of the step that holds it.
+
+Tolerance: ``rtol`` is the ε of the step-size rule; ``atol/rtol`` is the state size below which the error
+criterion is absolute (Jorba & Zou's mixed criterion for ``atol = rtol``). As with any local criterion the
+global error can exceed ε on long or chaotic runs (compare runs at two tolerances).
+
+Two ways to run the tape, same arithmetic, same results: the interpreter (any model; nothing compiled
+per model) and, for a model built with ``backend="numba"``, the tape written out as straight-line code
+(:mod:`lagrange.codegen.taylor_source`) and JIT-compiled once per model (cached on disk) — faster per step,
+for long runs and repeated runs. ``Trajectory.nfev`` counts tape passes (steps × order).
+
+Scope: unconstrained systems whose equations are analytic (no ``sign``/``Abs``/``Piecewise``); the work
+integral of non-conservative systems is integrated with the state. Needs numba
+(``pip install lagrange[fast]``).
+"""
+
+from __future__ import annotations
+
+import math
+import weakref
+
+import numpy as np
+
+from ..codegen.numeric import NumericModel
+from ..codegen.tape import Tape, build_tape
+from ..conventions import VELOCITY_SUFFIX
+from ..errors import IntegrationError
+from ..model.coordinates import coordinate_name
+from ..results.trajectory import Trajectory
+from .compiled import MAX_STEPS, LoopStatus, kernel
+
+__all__ = ["taylor_order", "tape_of", "compiled_series", "integrate_taylor"]
+
+_TAPES: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
+_SERIES: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
+
+
+def taylor_order(rtol: float) -> int:
+    """Jorba & Zou's order for tolerance ε: ``ceil(−ln(ε)/2 + 1)``, at least 2 (13 at 1e-10, 20 at 2.2e-16)."""
+    return max(2, math.ceil(-math.log(rtol) / 2 + 1))
+
+
+def tape_of(eqs) -> Tape:
+    """The tape of ``eqs``, built once per Equations object."""
+    try:
+        return _TAPES[eqs]
+    except (KeyError, TypeError):
+        pass
+    tape = build_tape(eqs)
+    try:
+        _TAPES[eqs] = tape
+    except TypeError:  # not weak-referenceable: no memo
+        pass
+    return tape
+
+
+def compiled_series(tape: Tape):
+    """The tape's straight-line ``series`` (:mod:`lagrange.codegen.taylor_source`), compiled by numba once per
+    model and cached on disk like the other generated modules."""
+    if tape not in _SERIES:
+        from ..codegen.numba_backend import import_module, purge_numba_cache, write_module
+        from ..codegen.taylor_source import series_source
+
+        name, path = write_module("taylor", series_source(tape))
+        try:
+            _SERIES[tape] = import_module(name, path).series
+        except Exception:  # noqa: BLE001 - a stale or corrupted numba cache entry: purge it and rebuild once
+            purge_numba_cache(name, path)
+            _SERIES[tape] = import_module(name, path).series
+    return _SERIES[tape]
+
+
+def integrate_taylor(model: NumericModel, t_span, y0, t_eval, *, rtol: float, atol: float,
+                     max_step: float = np.inf, max_steps: int = MAX_STEPS, label: str | None = None) -> Trajectory:
+    """Integrate ``model`` from ``y0 = [q, q̇]`` with the Taylor method (module docstring).
+
+    Raises
+    ------
+    TapeError
+        Constraints or a non-analytic function in the equations (named).
+    IntegrationError
+        The run stopped early (singular mass matrix, non-finite coefficients, collapsed step, too many
+        steps); ``t``, ``state`` and ``partial`` say where and what was computed.
+    """
+    eqs = model.equations
+    tape = tape_of(eqs)
+    t0, t1 = float(t_span[0]), float(t_span[1])
+    rtol, atol, max_step = float(rtol), float(atol), float(max_step)
+    if not (rtol > 0 and math.isfinite(rtol)):
+        raise ValueError(f"the Taylor method needs rtol > 0, got {rtol}")
+    if not (atol > 0 and math.isfinite(atol)):
+        raise ValueError(f"the Taylor method needs atol > 0 (atol/rtol is the absolute-criterion scale), got {atol}")
+    if not max_step > 0:
+        raise ValueError("max_step must be positive")
+    rtol = max(rtol, float(np.finfo(float).eps))
+    t_eval = np.ascontiguousarray(t_eval, dtype=float)
+    if np.any(t_eval < min(t0, t1)) or np.any(t_eval > max(t0, t1)):
+        raise ValueError("Values in `t_eval` are not within `t_span`.")
+    d = np.diff(t_eval)
+    if (t1 > t0 and np.any(d <= 0)) or (t1 < t0 and np.any(d >= 0)):
+        raise ValueError("Values in `t_eval` are not properly sorted.")
+    y0 = np.asarray(y0, dtype=float)
+    z0 = np.ascontiguousarray(y0 if tape.nz == y0.size else np.append(y0, 0.0))
+    order = taylor_order(rtol)
+    k = kernel("_taylor_loop.py", "taylorloop", "method='taylor'")
+    p = np.ascontiguousarray(model.params, dtype=float)
+    if model.backend == "numba":
+        code, t_end, z_end, Y, n_out, steps = k.entry("taylor_fn")(
+            compiled_series(tape), tape.const_code, tape.const_vals, tape.n_slots, tape.n, tape.nz, t0, t1, z0, p,
+            rtol, atol / rtol, order, max_step, t_eval, int(max_steps))
+    else:
+        code, t_end, z_end, Y, n_out, steps = k.entry("taylor")(
+            tape.const_code, tape.const_vals, tape.code, tape.consts, tape.n_slots, tape.n, tape.nz, tape.mass,
+            tape.force, tape.power, tape.slot_t, t0, t1, z0, p, rtol, atol / rtol, order, max_step, t_eval,
+            int(max_steps))
+    status = LoopStatus.from_code(int(code))
+    n2 = 2 * tape.n
+    Y = np.array(Y[:n_out])
+    ok = status is LoopStatus.SUCCESS
+    message = (f"{status.message if ok else 'stopped early'} ({steps} Taylor steps of order {order}, "
+               f"tape of {tape.size} instructions)")
+    traj = Trajectory(t=t_eval[:n_out].copy(), y=Y[:, :n2].copy(), model=model,
+                      method=label or f"taylor (order {order})", success=ok, message=message,
+                      nfev=int(steps) * order, work=None if tape.nz == n2 else Y[:, n2].copy(),
+                      initial=(t0, y0.copy()))
+    if ok:
+        return traj
+    names = [coordinate_name(c) for c in eqs.coordinates]
+    state_txt = ", ".join([f"{nm}={z_end[i]:.6g}" for i, nm in enumerate(names)]
+                          + [f"{nm}{VELOCITY_SUFFIX}={z_end[tape.n + i]:.6g}" for i, nm in enumerate(names)])
+    raise IntegrationError(
+        f"the Taylor method stopped at t={t_end:.9g} ({state_txt}): {status.message}. The trajectory up to "
+        f"there ({n_out} output points) is in the exception's `partial` attribute.",
+        t=float(t_end), state=dict(zip(eqs.coordinates, np.array(z_end[:n2]))), partial=traj)

@@ -1,0 +1,360 @@
+"""The derivation cache (lagrange.codegen.derivation_cache): a re-run in a fresh process loads the derived
+equations and the generated source instead of deriving and generating; any declared change, any version
+change and any damage gives a miss and a rebuild with the right answer; turned off, nothing is written.
+
+``DERIVATION_CACHE_SCENARIOS`` counts the scenarios tested here (docs/guarantees.md cites it).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import hashlib
+import json
+import os
+import platform
+import subprocess
+import sys
+import textwrap
+
+import numpy as np
+import pytest
+import sympy as sp
+
+import lagrange as lg
+from lagrange import t
+from lagrange.codegen import derivation_cache as dc
+from lagrange.codegen import numeric
+from lagrange.derive import lagrange as derive_module
+
+#: how a cache entry is damaged; each must be detected and the entry rebuilt
+DAMAGES = ("truncated", "garbage", "empty", "payload_bit_flip", "unpicklable_payload", "other_environment",
+           "other_key")
+#: targets whose version is in the key
+VERSIONS = ("lagrange", "sympy", "python", "machine", "lagrange_source")
+#: declared changes that must change the key (see _variants)
+CHANGES = ("mass", "V_term", "constraint", "constraint_kind", "P", "rayleigh", "force", "prescribed", "parameters",
+           "name", "coordinate_order", "coordinate_assumptions")
+#: changes also run end to end (a miss, a new entry, the right answer)
+END_TO_END = ("mass", "V_term", "constraint")
+#: spellings of LAGRANGE_DERIVATION_CACHE that turn the cache off
+OFF_VALUES = ("0", "off", "False", " no ")
+#: fresh-process hit, in-process reload, every System attribute keyed, equal declarations share a key, CHANGES,
+#: END_TO_END, DAMAGES on each of the two kinds of entry, VERSIONS, OFF_VALUES, a user sympy class is not cached,
+#: source entries are content-addressed
+DERIVATION_CACHE_SCENARIOS = (1 + 1 + 1 + 1 + len(CHANGES) + len(END_TO_END) + 2 * len(DAMAGES) + len(VERSIONS)
+                              + len(OFF_VALUES) + 1 + 1)
+
+Y = np.array([0.3, -0.2, 0.1, 0.4])
+
+
+@pytest.fixture
+def cache(tmp_path, monkeypatch):
+    """An empty cache directory, the derivation cache on, and call counters on derivation and CSE."""
+    monkeypatch.setenv("LAGRANGE_CACHE_DIR", str(tmp_path))
+    monkeypatch.setenv(dc.ENV_VAR, "1")
+    calls = {"derive": 0, "fuse": 0}
+    real_derive, real_fuse = derive_module.lagrange_equations, numeric.fuse
+
+    def derive(system):
+        calls["derive"] += 1
+        return real_derive(system)
+
+    def fuse(*args, **kwargs):
+        calls["fuse"] += 1
+        return real_fuse(*args, **kwargs)
+
+    monkeypatch.setattr(derive_module, "lagrange_equations", derive)
+    monkeypatch.setattr(numeric, "fuse", fuse)
+    return tmp_path, calls
+
+
+def _declare(mass: float = 1, *, v_extra=0, constraint=None, name: str = "") -> lg.System:
+    """A planar pendulum in Cartesian coordinates with a rod constraint (x² + y² = l²)."""
+    x, y = lg.coordinates("x y")
+    m, g, l = lg.parameters("m g l")
+    rod = x**2 + y**2 - l**2 if constraint is None else constraint(x, y, l)
+    return lg.System([x, y], bodies=[lg.Particle(mass * m, (x, y))], V=m * g * y + v_extra * y**2,
+                     constraints=[rod], name=name)
+
+
+def _variants() -> dict:
+    x, y = lg.coordinates("x y")
+    m, g, l, c, k = lg.parameters("m g l c k")
+    xd, yd = x.diff(t), y.diff(t)
+
+    def system(coords=(x, y), T=m * (xd**2 + yd**2) / 2, **kw):
+        kw.setdefault("V", m * g * y)
+        kw.setdefault("constraints", [x**2 + y**2 - l**2])
+        return lg.System(list(coords), T=T, **kw)
+
+    s = lg.coordinates("s")
+    xr = sp.Function("x")(t)  # not real: only the function's assumptions differ from x
+    return {
+        "base": system(),
+        "mass": system(T=2 * m * (xd**2 + yd**2) / 2),
+        "V_term": system(V=m * g * y + k * x**2 / 2),
+        "constraint": system(constraints=[x**2 + y**2 - 2 * l**2]),
+        "constraint_kind": system(constraints=[lg.Holonomic(x**2 + y**2 - l**2, unilateral=True)]),
+        "P": system(P=-c * xd**2 / 2),
+        "rayleigh": system(rayleigh=c * xd**2 / 2),
+        "force": system(forces={x: k}),
+        "prescribed": system(V=m * g * y + k * x * s, prescribed={s: sp.sin(t)}),
+        "parameters": system(parameters=[m, g, l, k]),
+        "name": system(name="pendulum"),
+        "coordinate_order": system(coords=(y, x)),
+        "coordinate_assumptions": lg.System([xr, y], T=m * (xr.diff(t) ** 2 + y.diff(t) ** 2) / 2, V=m * g * y,
+                                            constraints=[xr**2 + y**2 - l**2]),
+    }
+
+
+def _entries(root, kind: str = "") -> list:
+    return sorted(root.glob(f"{kind}*_*.pkl")) + sorted(root.glob(f"{kind}*_*.txt"))
+
+
+def _digest(eqs) -> str:
+    return hashlib.sha256(sp.srepr(tuple(getattr(eqs, f.name) for f in dataclasses.fields(eqs))).encode()).hexdigest()
+
+
+_CHILD = textwrap.dedent("""
+    import hashlib, json, sys, dataclasses
+    import numpy as np, sympy as sp
+    import lagrange as lg
+    from lagrange.examples import n_link_pendulum
+    if sys.argv[1] == "warm":  # derivation and CSE must not run at all: fail loudly if they do
+        import lagrange.codegen.numeric as numeric
+        import lagrange.derive.lagrange as derive_module
+        def forbidden(*args, **kwargs):
+            raise AssertionError("derived or generated again")
+        derive_module.lagrange_equations = numeric.fuse = forbidden
+    x, y = lg.coordinates("x y")
+    m, g, l = lg.parameters("m g l")
+    rod = lg.System([x, y], bodies=[lg.Particle(m, (x, y))], V=m * g * y, constraints=[x**2 + y**2 - l**2])
+    out = {}
+    for label, system, params, initial in (
+            ("double", n_link_pendulum(2), {"g": 9.81}, {"q1": 0.6, "q2": -0.3, "q1_dot": 0, "q2_dot": 0}),
+            ("rod", rod, {"m": 1, "g": 9.81, "l": 1}, {"x": 0.6, "y": -0.8, "x_dot": 0.8, "y_dot": 0.6})):
+        eqs = system.derived
+        fields = tuple(getattr(eqs, f.name) for f in dataclasses.fields(eqs))
+        out[label + " equations"] = hashlib.sha256(sp.srepr(fields).encode()).hexdigest()
+        for backend in ("python", "numba") if sys.argv[2] == "1" else ("python",):
+            model = system.compile(params, backend=backend)
+            traj = system.simulate(1.0, initial, params, backend=backend, loop="scipy", rtol=1e-10, atol=1e-12)
+            out[f"{label} {backend} source"] = model.source
+            out[f"{label} {backend} final"] = traj.y[-1].tolist()
+    print(json.dumps(out))
+""")
+
+
+def _run_child(cache_dir, phase: str, seed: str) -> dict:
+    numba = "1" if _has_numba() else "0"
+    env = dict(os.environ, LAGRANGE_CACHE_DIR=str(cache_dir), PYTHONHASHSEED=seed)
+    env.pop(dc.ENV_VAR, None)  # the default: on
+    r = subprocess.run([sys.executable, "-c", _CHILD, phase, numba], env=env, capture_output=True, text=True,
+                       timeout=300)
+    assert r.returncode == 0, r.stderr[-3000:]
+    return json.loads(r.stdout.strip().splitlines()[-1])
+
+
+def _has_numba() -> bool:
+    import importlib.util
+
+    return importlib.util.find_spec("numba") is not None
+
+
+def test_hit_in_fresh_process_is_identical(tmp_path, monkeypatch):
+    """A second fresh interpreter (other hash seed) with derivation and CSE disabled by force gets the same
+    equations (srepr), the same source and the same simulation, bit for bit; it writes no entry. Both agree
+    with a run that has the cache off."""
+    cold = _run_child(tmp_path, "cold", "1")
+    written = {p: p.stat().st_mtime_ns for p in _entries(tmp_path)}
+    assert len([p for p in written if p.name.startswith("derived_")]) == 2
+    assert len([p for p in written if p.name.startswith("source_")]) == (4 if _has_numba() else 2)
+    warm = _run_child(tmp_path, "warm", "2")
+    assert warm == cold
+    assert {p: p.stat().st_mtime_ns for p in _entries(tmp_path)} == written  # nothing rewritten
+    # against an independent derivation in this process with the cache off (CSE may order terms differently)
+    monkeypatch.setenv(dc.ENV_VAR, "0")
+    traj = _declare().simulate(1.0, {"x": 0.6, "y": -0.8, "x_dot": 0.8, "y_dot": 0.6}, {"m": 1, "g": 9.81, "l": 1},
+                               rtol=1e-10, atol=1e-12)
+    assert np.allclose(traj.y[-1], cold["rod python final"], rtol=1e-8, atol=1e-9)
+    assert abs(np.hypot(*cold["rod python final"][:2]) - 1.0) < 1e-8  # stays on the rod
+
+
+def test_second_build_loads_and_matches(cache):
+    root, calls = cache
+    first = _declare().derived
+    model = _declare().compile({"m": 1, "g": 9.81, "l": 1})
+    assert calls == {"derive": 1, "fuse": 1}
+    again = _declare()  # a new System object: its memo is empty, the disk entry is used
+    eqs = again.derived
+    model2 = again.compile({"m": 1, "g": 9.81, "l": 1})
+    assert calls == {"derive": 1, "fuse": 1}
+    assert _digest(eqs) == _digest(first) and model2.source == model.source
+    ref = _declare().compile({"m": 1, "g": 9.81, "l": 1}, backend="reference")
+    assert np.allclose(model2.fun(0.0, Y), ref.fun(0.0, Y), rtol=1e-12, atol=1e-12)
+
+
+def test_every_system_attribute_is_keyed_or_explained():
+    """A new System attribute must enter the key or be listed as irrelevant to the derivation."""
+    s = _declare()
+    keyed = {name for name, _ in dc._declaration(s)}
+    assert set(vars(s)) - {"_frozen"} == keyed | set(dc.UNKEYED_ATTRIBUTES)
+    assert not keyed & set(dc.UNKEYED_ATTRIBUTES)
+
+
+def test_equal_declarations_share_a_key():
+    assert dc.declaration_key(_declare()) == dc.declaration_key(_declare())
+    assert dc.declaration_key(_variants()["base"]) == dc.declaration_key(_variants()["base"])
+
+
+def test_every_declared_change_changes_the_key():
+    variants = _variants()
+    assert set(variants) == {"base", *CHANGES}
+    keys = {label: dc.declaration_key(s) for label, s in variants.items()}
+    assert None not in keys.values()
+    assert len(set(keys.values())) == len(keys), "two different declarations share a key"
+
+
+@pytest.mark.parametrize("change", END_TO_END)
+def test_changed_declaration_misses_and_is_right(cache, change):
+    """End to end: after the base system is cached, a changed mass, V term or constraint derives anew (a new
+    entry) and its right-hand side matches the reference backend of the changed system."""
+    root, calls = cache
+    _declare().compile({"m": 1, "g": 9.81, "l": 1})
+    build = {"mass": lambda: _declare(mass=2), "V_term": lambda: _declare(v_extra=3),
+             "constraint": lambda: _declare(constraint=lambda x, y, l: x**2 + 2 * y**2 - l**2)}[change]
+    model = build().compile({"m": 1, "g": 9.81, "l": 1})
+    assert calls == {"derive": 2, "fuse": 2}
+    assert len(_entries(root, "derived")) == 2
+    ref = build().compile({"m": 1, "g": 9.81, "l": 1}, backend="reference")
+    base = _declare().compile({"m": 1, "g": 9.81, "l": 1}, backend="reference")
+    assert np.allclose(model.fun(0.0, Y), ref.fun(0.0, Y), rtol=1e-12, atol=1e-12)
+    assert not np.allclose(model.fun(0.0, Y), base.fun(0.0, Y))
+
+
+def _damage(path, how: str) -> None:
+    data = path.read_bytes()
+    head, _, payload = data.partition(b"\n")
+    key = path.stem.split("_", 1)[1]
+    if how == "truncated":
+        path.write_bytes(data[: len(data) * 2 // 3])
+    elif how == "garbage":
+        path.write_bytes(b"\x80garbage\n" * 9)
+    elif how == "empty":
+        path.write_bytes(b"")
+    elif how == "payload_bit_flip":
+        path.write_bytes(head + b"\n" + payload[:-5] + bytes([payload[-5] ^ 1]) + payload[-4:])
+    elif how == "unpicklable_payload":  # a header that matches its payload, which is not what was stored
+        bad = b"\x80\x05not a pickle" if path.suffix == ".pkl" else b"\xff\xfe not utf-8"
+        path.write_bytes(dc._header(key, bad) + b"\n" + bad)
+    elif how == "other_environment":  # a well-formed entry written by other versions
+        path.write_bytes(head.replace(b"sympy ", b"sympy 0.0.1+") + b"\n" + payload)
+    else:  # a well-formed entry of another key copied over this one
+        other = "0" * len(key)
+        path.write_bytes(dc._header(other, payload) + b"\n" + payload)
+
+
+@pytest.mark.parametrize("kind", ["derived", "source"])
+@pytest.mark.parametrize("how", DAMAGES)
+def test_damaged_entry_is_rebuilt(cache, kind, how):
+    root, calls = cache
+    model = _declare().compile({"m": 1, "g": 9.81, "l": 1})
+    digest = _digest(_declare().derived)
+    (entry,) = _entries(root, kind)
+    intact = entry.read_bytes()
+    _damage(entry, how)
+    assert entry.read_bytes() != intact
+    system = _declare()
+    again = system.compile({"m": 1, "g": 9.81, "l": 1})
+    assert calls == ({"derive": 2, "fuse": 1} if kind == "derived" else {"derive": 1, "fuse": 2})
+    assert _digest(system.derived) == digest and again.source == model.source
+    assert np.array_equal(again.fun(0.0, Y), model.fun(0.0, Y))
+    assert dc._read(entry, entry.stem.split("_", 1)[1]) is not None  # rewritten, intact
+    assert not list(root.glob(".*.tmp"))
+
+
+def _bump(monkeypatch, target: str) -> None:
+    if target == "lagrange":
+        monkeypatch.setattr(lg, "__version__", lg.__version__ + ".post1")
+    elif target == "sympy":
+        monkeypatch.setattr(sp, "__version__", sp.__version__ + ".post1")
+    elif target == "python":
+        monkeypatch.setattr(sys, "version", sys.version + " (upgraded)")
+    elif target == "machine":
+        monkeypatch.setattr(platform, "machine", lambda: "other-machine")
+    else:  # an edited checkout: the derive/codegen source hash changes
+        monkeypatch.setattr(dc, "_source_digest", lambda: "f" * 64)
+
+
+@pytest.mark.parametrize("target", VERSIONS)
+def test_version_change_gives_new_entries(cache, monkeypatch, target):
+    root, calls = cache
+    system = _declare()
+    key, env = dc.declaration_key(system), dc.environment()
+    system.compile({"m": 1, "g": 9.81, "l": 1})
+    old = _entries(root)
+    with monkeypatch.context() as m:
+        _bump(m, target)
+        assert dc.declaration_key(system) != key and dc.environment() != env
+        _declare().compile({"m": 1, "g": 9.81, "l": 1})
+        assert calls == {"derive": 2, "fuse": 2}  # the old entries are not used
+        assert len(_entries(root)) == 2 * len(old)
+    _declare().compile({"m": 1, "g": 9.81, "l": 1})  # back to the current versions: the first entries hit
+    assert calls == {"derive": 2, "fuse": 2}
+
+
+@pytest.mark.parametrize("value", OFF_VALUES)
+def test_turned_off_writes_and_reads_nothing(cache, monkeypatch, value):
+    root, calls = cache
+    _declare().compile({"m": 1, "g": 9.81, "l": 1})  # an entry exists...
+    before = {p: p.stat().st_mtime_ns for p in _entries(root)}
+    monkeypatch.setenv(dc.ENV_VAR, value)
+    assert not dc.enabled()
+    for _ in range(2):
+        _declare().compile({"m": 1, "g": 9.81, "l": 1})
+    assert calls == {"derive": 3, "fuse": 3}  # ...and is not read
+    assert {p: p.stat().st_mtime_ns for p in _entries(root)} == before
+    monkeypatch.setenv("LAGRANGE_CACHE_DIR", str(root / "empty"))
+    _declare().compile({"m": 1, "g": 9.81, "l": 1})
+    assert not _entries(root / "empty")
+
+
+class softplus(sp.Function):  # noqa: N801 - a user's sympy function: its srepr does not say what it does
+    def fdiff(self, argindex=1):
+        return 1 / (1 + sp.exp(-self.args[0]))
+
+
+def test_user_sympy_class_is_not_cached(cache):
+    """Its srepr names the class but not its behaviour (a same-named class elsewhere may differ)."""
+    root, calls = cache
+    x = lg.coordinates("x")
+    m, k = lg.parameters("m k")
+    system = lg.System([x], T=m * x.diff(t) ** 2 / 2, V=k * softplus(x))
+    assert dc.declaration_key(system) is None
+    eqs = system.derived
+    assert calls["derive"] == 1 and not _entries(root)
+    expected = -k / (1 + sp.exp(-eqs.q[0]))
+    assert sp.simplify(eqs.forcing[0] - expected) == 0
+
+
+def test_source_entries_are_content_addressed(cache):
+    """Equations built another way (here: the derived ones with a changed forcing) get their own source
+    entry, and a Baumgarte constraint right-hand side its own; each model matches its reference."""
+    root, calls = cache
+    system = _declare()
+    eqs = system.derived
+    params = {"m": 1, "g": 9.81, "l": 1}
+    plain = numeric.compile_equations(eqs, params)
+    g = eqs.parameters[0]
+    pushed = dataclasses.replace(eqs, forcing=eqs.forcing + sp.ImmutableMatrix([g, 0]))
+    other = numeric.compile_equations(pushed, params)
+    from lagrange.integrate.constrained import baumgarte_rhs
+
+    stabilised = numeric.compile_equations(eqs, params, constraint_rhs=baumgarte_rhs(eqs, 10.0, 10.0))
+    assert calls["fuse"] == 3 and len(_entries(root, "source")) == 3
+    ref = numeric.compile_equations(pushed, params, backend="reference")
+    assert np.allclose(other.fun(0.0, Y), ref.fun(0.0, Y), rtol=1e-12, atol=1e-12)
+    assert not np.allclose(other.fun(0.0, Y), plain.fun(0.0, Y))
+    assert stabilised.source != plain.source
+    numeric.compile_equations(pushed, params)  # the same content again: a hit
+    assert calls["fuse"] == 3
