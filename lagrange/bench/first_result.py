@@ -115,12 +115,11 @@ def _child(problem_name: str, route: str, tol: float, quick: bool) -> dict:
     t0 = time.perf_counter()
     model = system.compile(p.params, backend=backend)
     compile_s = time.perf_counter() - t0
-    extra = ({"loop": "compiled"} if route.startswith("compiled") else {"loop": "scipy"} if route == "numba"
-             else {"method": "taylor"} if route.startswith("taylor") else {"method": "DOP853"})
-    extra = {"method": "DOP853"} | extra
+    method = "taylor" if route.startswith("taylor") else "DOP853"
+    loop = {"compiled": {"loop": "compiled"}, "numba": {"loop": "scipy"}}.get(route.split("_")[0], {})
     t0 = time.perf_counter()
-    sol = system.simulate((0.0, p.t_end), p.initial, p.params, rtol=tol, atol=tol * p.atol_scale,
-                          backend=backend, model=model, t_eval=times, **p.options, **extra)
+    sol = system.simulate((0.0, p.t_end), p.initial, p.params, method=method, rtol=tol, atol=tol * p.atol_scale,
+                          backend=backend, model=model, t_eval=times, **p.options, **loop)
     return dict(derive=derive, compile=compile_s, integrate=time.perf_counter() - t0, states=sol.y.tolist())
 
 

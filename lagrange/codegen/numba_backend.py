@@ -124,16 +124,23 @@ def numba_rhs(source: str) -> Callable:
     cached module and return its ``rhs``; the module's other functions are reachable through
     ``rhs.py_func.__globals__`` (compiled lazily, on first call)."""
     _require_numba("backend='numba' (or use backend='python')")
-    name, path = write_module("rhs", _HEADER + decorate(source))
+    return load_cached("rhs", _HEADER + decorate(source), "the generated module", _load)
+
+
+def load_cached(prefix: str, text: str, what: str, load: Callable = import_module):
+    """``load(name, path)`` of module ``text`` written to the cache (:func:`write_module`); a stale or
+    corrupted numba cache entry is purged and the load retried once, and a failure that survives the rebuild
+    is one :class:`BackendError` line naming ``what`` and the module's path."""
+    name, path = write_module(prefix, text)
     try:
-        return _load(name, path)
+        return load(name, path)
     except Exception:  # noqa: BLE001 - a stale or corrupted numba cache entry: purge it and rebuild once
         purge_numba_cache(name, path)
         try:
-            return _load(name, path)
+            return load(name, path)
         except Exception as exc:  # noqa: BLE001 - report a failure that survives the rebuild as one line
-            raise BackendError(f"compiling the generated module {path} with numba failed after purging its "
-                               f"cache: {type(exc).__name__}: {exc}") from exc
+            raise BackendError(f"compiling {what} {path} with numba failed after purging its cache: "
+                               f"{type(exc).__name__}: {exc}") from exc
 
 
 def purge_numba_cache(name: str, path: Path) -> None:

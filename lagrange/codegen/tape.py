@@ -72,7 +72,6 @@ class _Builder:
     var: set = field(default_factory=set)
     memo: dict = field(default_factory=dict)
     rows: list = field(default_factory=list)  # (is_var, op, a, b, out, const)
-    where: str = ""
 
     def new(self) -> int:
         self.next_slot += 1
@@ -92,29 +91,27 @@ class _Builder:
         return self.memo[key]
 
     # --- arithmetic with the constant/variable classification ---
-    def add(self, a: int, b: int) -> int:
+    def binary(self, a: int, b: int, vv: str, vc: str, cv: str | None = None) -> int:
+        """``a ∘ b`` as ``vv`` when both operands are variable or both constant, ``vc`` for variable ∘ constant,
+        ``cv`` for constant ∘ variable — or, for a commutative ∘ (``cv`` None), ``vc`` with the operands swapped."""
         va, vb = a in self.var, b in self.var
-        if va and vb:
-            return self.emit("ADD", a, b, var=True)
-        if va or vb:
-            return self.emit("ADDC", a if va else b, b if va else a, var=True)
-        return self.emit("ADD", a, b, var=False)
+        if va == vb:
+            return self.emit(vv, a, b, var=va)
+        if cv is None and not va:
+            a, b, va = b, a, True
+        return self.emit(vc if va else cv, a, b, var=True)
+
+    def add(self, a: int, b: int) -> int:
+        return self.binary(a, b, "ADD", "ADDC")
 
     def sub(self, a: int, b: int) -> int:
-        va, vb = a in self.var, b in self.var
-        op = "SUB" if va == vb else ("SUBVC" if va else "SUBCV")
-        return self.emit(op, a, b, var=va or vb)
+        return self.binary(a, b, "SUB", "SUBVC", "SUBCV")
 
     def mul(self, a: int, b: int) -> int:
-        va, vb = a in self.var, b in self.var
-        if va != vb:
-            return self.emit("MULC", a if va else b, b if va else a, var=True)
-        return self.emit("MUL", a, b, var=va)
+        return self.binary(a, b, "MUL", "MULC")
 
     def div(self, a: int, b: int) -> int:
-        va, vb = a in self.var, b in self.var
-        op = "DIV" if va == vb else ("DIVVC" if va else "DIVCV")
-        return self.emit(op, a, b, var=va or vb)
+        return self.binary(a, b, "DIV", "DIVVC", "DIVCV")
 
     def unary(self, op: str, a: int, c: float = 0.0) -> int:
         return self.emit(op, a, c=c, var=a in self.var)
@@ -207,10 +204,7 @@ class _Builder:
             u = e.args[0]
             return self.expr({sp.sinh: (sp.exp(u) - sp.exp(-u)) / 2, sp.cosh: (sp.exp(u) + sp.exp(-u)) / 2,
                               sp.tanh: (sp.exp(2 * u) - 1) / (sp.exp(2 * u) + 1)}[f])
-        name = getattr(f, "__name__", str(f))
-        raise TapeError(f"the Taylor method cannot expand {name}(...) in {self.where} (it needs an analytic "
-                        f"right-hand side: + - * / powers exp log sin cos tan sinh cosh tanh); use an adaptive "
-                        f"Runge-Kutta method such as method='DOP853' for this system")
+        raise _refusal(f"{getattr(f, '__name__', f)}(...)", "the equations")  # _check_analytic names the place
 
 
 _ANALYTIC = (sp.sin, sp.cos, sp.tan, sp.exp, sp.log, sp.sinh, sp.cosh, sp.tanh)
@@ -228,10 +222,14 @@ def _check_analytic(eqs: Equations) -> None:
         places.append(("the power dh/dt of the work integral", eqs.jacobi_rate))
     for where, e in places:
         for f in sorted(sp.sympify(e).atoms(sp.Function), key=sp.default_sort_key):
-            if f.func not in _ANALYTIC and not (f.func is sp.log and len(f.args) == 1):
-                raise TapeError(f"the Taylor method cannot expand {f} in {where} (it needs an analytic right-hand "
-                                f"side: + - * / powers exp log sin cos tan sinh cosh tanh); use an adaptive "
-                                f"Runge-Kutta method such as method='DOP853' for this system")
+            if f.func not in _ANALYTIC:
+                raise _refusal(str(f), where)
+
+
+def _refusal(what: str, where: str) -> TapeError:
+    return TapeError(f"the Taylor method cannot expand {what} in {where} (it needs an analytic right-hand side: "
+                     f"+ - * / powers exp log sin cos tan sinh cosh tanh); use an adaptive Runge-Kutta method such "
+                     f"as method='DOP853' for this system")
 
 
 def build_tape(eqs: Equations) -> Tape:
@@ -259,19 +257,15 @@ def build_tape(eqs: Equations) -> Tape:
     for k in range(b.n_params):
         b.memo[sp.Symbol(f"p{k}", real=True)] = b.emit("LOADP", k, var=False)
     for sym, e in fused.temporaries:
-        b.where = f"the common subexpression {sym} = {e}"
         b.memo[sym] = b.expr(e)
     mass = -np.ones((n, n), dtype=np.int64)
     for (i, j), e in fused.mass_upper.items():
-        b.where = f"the mass matrix entry M[{i}, {j}]"
         mass[i, j] = b.expr(e)
     force = np.empty(n, dtype=np.int64)
     for i, e in enumerate(fused.forcing):
-        b.where = f"the generalized force f[{i}] of {eqs.coordinates[i]}"
         force[i] = b.expr(e)
     power = -1
     if red_extra:
-        b.where = "the power dh/dt of the work integral"
         power = b.expr(red_extra[0])
 
     def arrays(rows):

@@ -59,14 +59,12 @@ _I1 = types.int64[::1]
 #: ``(status, t reached, z reached, Y, n_out, steps)``
 TAYLOR = types.Tuple((types.int64, types.float64, _F1, types.float64[:, ::1], types.int64, types.int64))(
     _I2, _F1, _I2, _F1, types.int64, types.int64, types.int64, _I2, _I1, types.int64, types.int64,
-    types.float64, types.float64, _F1, _F1, types.float64, types.float64, types.int64, types.float64, _F1,
-    types.int64)
+    types.float64, types.float64, _F1, _F1, types.float64, types.int64, types.float64, _F1, types.int64)
 _F2 = types.float64[:, ::1]
 #: a model's compiled ``series(t, S, acc, L, d, Mk, r, p_order) -> ok`` (lagrange.codegen.taylor_source)
 SERIES = types.boolean(types.float64, _F2, _F2, _F2, _F1, _F2, _F1, types.int64)
 TAYLOR_FN = TAYLOR.return_type(FunctionType(SERIES), _I2, _F1, types.int64, types.int64, types.int64, types.float64,
-                               types.float64, _F1, _F1, types.float64, types.float64, types.int64, types.float64,
-                               _F1, types.int64)
+                               types.float64, _F1, _F1, types.float64, types.int64, types.float64, _F1, types.int64)
 
 
 @njit(cache=True, error_model="numpy", inline="always")
@@ -163,8 +161,8 @@ def _ldl(n: int, mass, S, Mk, L, d) -> bool:
 
 
 @njit(cache=True, error_model="numpy")
-def _series(code, consts, n, nz, slot_t, slot_w, mass, force, power, p_order, t, S, acc, L, d, Mk, r) -> bool:
-    """Taylor coefficients ``0..p_order`` of the state slots ``0..nz−1`` at time t (``S[:nz, 0]`` set)."""
+def _series(code, consts, n, slot_t, slot_w, mass, force, power, p_order, t, S, acc, L, d, Mk, r) -> bool:
+    """Taylor coefficients ``0..p_order`` of the state slots at time t (their order 0 set)."""
     n_ins = code.shape[0]
     S[slot_t, 0] = t
     S[slot_t, 1] = 1.0
@@ -262,15 +260,16 @@ def _advance(S, nz, p_order, floor, max_step, t, t1, direction, t_eval, n_out, Y
 
 
 def taylor(const_code, const_vals, code, consts, n_slots, n, nz, mass, force, power, slot_t, t0, t1, z0, p,
-           tol, floor, p_order, max_step, t_eval, max_steps):
+           floor, p_order, max_step, t_eval, max_steps):
     """Integrate from ``(t0, z0)`` to ``t1``, interpreting the tape; outputs at ``t_eval`` (sorted in the
     direction of integration).
 
     ``const_code``/``const_vals``: instructions run once at order 0 (``LOADP`` reads ``p[a]``);
     ``code``/``consts``: the state-dependent instructions; slots ``0..nz−1`` are the state (``nz = 2n`` or
     ``2n + 1`` with the work integral, ``power`` its rate's slot), ``slot_t`` the time, ``mass`` (n, n) the
-    upper triangle of M (−1 = zero), ``force`` the slots of f. ``tol``, ``floor``, ``p_order``: ε, A and p
-    of the module docstring. Status codes as :class:`lagrange.integrate.compiled.LoopStatus`.
+    upper triangle of M (−1 = zero), ``force`` the slots of f. ``floor`` and ``p_order``: A and p of the
+    module docstring (the order carries the tolerance ε). Status codes as
+    :class:`lagrange.integrate.compiled.LoopStatus`.
     """
     S, acc, L, d, Mk, r = _constants(const_code, const_vals, n_slots, n, p_order, p)
     z = z0.copy()
@@ -282,7 +281,7 @@ def taylor(const_code, const_vals, code, consts, n_slots, n, nz, mass, force, po
         if steps >= max_steps:
             return 4, t, z, Y, n_out, steps
         S[:nz, 0] = z
-        if not _series(code, consts, n, nz, slot_t, slot_w, mass, force, power, p_order, t, S, acc, L, d, Mk, r):
+        if not _series(code, consts, n, slot_t, slot_w, mass, force, power, p_order, t, S, acc, L, d, Mk, r):
             return 3, t, z, Y, n_out, steps
         status, t, n_out = _advance(S, nz, p_order, floor, max_step, t, t1, direction, t_eval, n_out, Y, z)
         if status != 0:
@@ -291,7 +290,7 @@ def taylor(const_code, const_vals, code, consts, n_slots, n, nz, mass, force, po
     return 0, t, z, Y, n_out, steps
 
 
-def taylor_fn(series, const_code, const_vals, n_slots, n, nz, t0, t1, z0, p, tol, floor, p_order, max_step, t_eval,
+def taylor_fn(series, const_code, const_vals, n_slots, n, nz, t0, t1, z0, p, floor, p_order, max_step, t_eval,
               max_steps):
     """:func:`taylor` with the model's compiled ``series`` (:mod:`lagrange.codegen.taylor_source`) instead of
     the interpreter; same results."""

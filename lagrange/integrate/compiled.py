@@ -36,13 +36,12 @@ from types import ModuleType
 import numpy as np
 
 from ..codegen.numeric import NumericModel
-from ..conventions import VELOCITY_SUFFIX
 from ..errors import BackendError, IntegrationError
-from ..model.coordinates import coordinate_name
+from ..model.coordinates import state_text
 from ..results.trajectory import Trajectory
 
 __all__ = ["LOOPS", "LOOP_METHODS", "LoopStatus", "LoopResult", "choose_loop", "kernel", "loops", "run_loop",
-           "integrate_compiled"]
+           "integrate_compiled", "stopped_error", "check_output_times"]
 
 LOOPS = ("auto", "scipy", "compiled")
 #: the methods of the compiled loop (functions of the same name, lower case, in ``_rk_loops``)
@@ -141,7 +140,7 @@ def choose_loop(loop: str, *, backend: str, model: NumericModel | None, eqs, met
     return True, "compiled loop"
 
 
-_LOADED: dict[tuple, ModuleType] = {}  # (cache dir, file) and ($LAGRANGE_CACHE_DIR, file): the module
+_LOADED: dict[tuple[str | None, str], ModuleType] = {}  # ($LAGRANGE_CACHE_DIR, file name): the module
 
 
 def kernel(filename: str, prefix: str, what: str) -> ModuleType:
@@ -155,25 +154,13 @@ def kernel(filename: str, prefix: str, what: str) -> ModuleType:
     machine and version. A corrupted numba cache is purged and rebuilt once; ``what`` names the feature in
     errors.
     """
-    fast = _LOADED.get((os.environ.get("LAGRANGE_CACHE_DIR"), filename))
-    if fast is not None:
-        return fast
-    from ..codegen.numba_backend import _require_numba, cache_dir, import_module, purge_numba_cache, write_module
-
-    key = (cache_dir(), filename)
+    key = (os.environ.get("LAGRANGE_CACHE_DIR"), filename)  # cache_dir() follows this variable alone
     if key not in _LOADED:
+        from ..codegen.numba_backend import _require_numba, load_cached
+
         _require_numba(what)
-        name, path = write_module(prefix, Path(__file__).with_name(filename).read_text(encoding="utf-8"))
-        try:
-            _LOADED[key] = import_module(name, path)
-        except Exception:  # noqa: BLE001 - a stale or corrupted numba cache entry: purge it and rebuild once
-            purge_numba_cache(name, path)
-            try:
-                _LOADED[key] = import_module(name, path)
-            except Exception as exc:  # noqa: BLE001 - one line naming the module
-                raise BackendError(f"compiling {path} ({what}) with numba failed after purging its cache: "
-                                   f"{type(exc).__name__}: {exc}") from exc
-    _LOADED[(os.environ.get("LAGRANGE_CACHE_DIR"), filename)] = _LOADED[key]
+        _LOADED[key] = load_cached(prefix, Path(__file__).with_name(filename).read_text(encoding="utf-8"),
+                                   f"the kernel for {what}")
     return _LOADED[key]
 
 
@@ -209,14 +196,7 @@ def run_loop(model: NumericModel, method: str, t_span, z0, t_eval, *, rtol: floa
         raise ValueError("atol must be non-negative")
     if not max_step > 0:
         raise ValueError("max_step must be positive")
-    t_eval = np.ascontiguousarray(t_eval, dtype=float)
-    if t_eval.ndim != 1:
-        raise ValueError("t_eval must be 1-dimensional")
-    if np.any(t_eval < min(t0, t1)) or np.any(t_eval > max(t0, t1)):
-        raise ValueError("Values in `t_eval` are not within `t_span`.")
-    d = np.diff(t_eval)
-    if (t1 > t0 and np.any(d <= 0)) or (t1 < t0 and np.any(d >= 0)):
-        raise ValueError("Values in `t_eval` are not properly sorted.")
+    t_eval = check_output_times(t_eval, t0, t1)
     if method not in LOOP_METHODS:
         raise TypeError(f"the compiled loop has the methods {', '.join(LOOP_METHODS)}, not {method!r}")
     field = _field(model)
@@ -257,11 +237,29 @@ def integrate_compiled(model: NumericModel, method: str, t_span, y0, t_eval, *, 
                       work=None if conservative else res.z[:, n2].copy(), initial=(float(t_span[0]), y0.copy()))
     if ok:
         return traj
-    names = [coordinate_name(c) for c in eqs.coordinates]
-    zr = res.z_reached
-    state_txt = ", ".join([f"{nm}={zr[i]:.6g}" for i, nm in enumerate(names)]
-                          + [f"{nm}{VELOCITY_SUFFIX}={zr[eqs.n + i]:.6g}" for i, nm in enumerate(names)])
-    raise IntegrationError(
-        f"the compiled {method} loop stopped at t={res.t_reached:.9g} ({state_txt}): {res.status.message}. "
-        f"The trajectory up to there ({len(res.t)} output points) is in the exception's `partial` attribute.",
-        t=res.t_reached, state=dict(zip(eqs.coordinates, zr[:n2])), partial=traj)
+    raise stopped_error(f"the compiled {method} loop", res.status, res.t_reached, res.z_reached, traj)
+
+
+def stopped_error(what: str, status: LoopStatus, t_reached: float, z_reached, partial: Trajectory
+                  ) -> IntegrationError:
+    """The IntegrationError of a compiled run that ended with ``status`` at ``(t_reached, z_reached)``:
+    where, in which state, why, and ``partial`` (the trajectory up to there)."""
+    coords = partial.model.equations.coordinates
+    return IntegrationError(
+        f"{what} stopped at t={t_reached:.9g} ({state_text(coords, z_reached)}): {status.message}. The "
+        f"trajectory up to there ({len(partial.t)} output points) is in the exception's `partial` attribute.",
+        t=float(t_reached), state=dict(zip(coords, np.asarray(z_reached)[:2 * len(coords)])), partial=partial)
+
+
+def check_output_times(t_eval, t0: float, t1: float) -> np.ndarray:
+    """``t_eval`` as a contiguous float array, checked as scipy checks it (one-dimensional, within
+    ``[t0, t1]``, sorted in the direction of integration); ValueError worded as scipy's."""
+    t_eval = np.ascontiguousarray(t_eval, dtype=float)
+    if t_eval.ndim != 1:
+        raise ValueError("t_eval must be 1-dimensional")
+    if np.any(t_eval < min(t0, t1)) or np.any(t_eval > max(t0, t1)):
+        raise ValueError("Values in `t_eval` are not within `t_span`.")
+    d = np.diff(t_eval)
+    if (t1 > t0 and np.any(d <= 0)) or (t1 < t0 and np.any(d >= 0)):
+        raise ValueError("Values in `t_eval` are not properly sorted.")
+    return t_eval

@@ -18,7 +18,7 @@ from ..codegen.cse import numeric_arguments, rename_map
 from ..codegen.numeric import NumericModel, compile_equations, lam_required
 from ..conventions import VELOCITY_SUFFIX
 from ..errors import InitialConditionError, IntegrationError, LagrangeError, SingularMassMatrixError
-from ..model.coordinates import coordinate_name, is_coordinate
+from ..model.coordinates import coordinate_name, is_coordinate, state_text
 from ..results.trajectory import Trajectory
 from .constrained import STABILIZATIONS, Projector, baumgarte_rhs, consistent_initial
 from .rough import run_rough
@@ -84,12 +84,11 @@ def _stiffness(eqs, params, t_span, y0) -> tuple[float, float] | None:
 
 def _taylor_ready(eqs) -> bool:
     """Whether ``method="taylor"`` can run ``eqs`` here (numba installed, analytic unconstrained equations)."""
-    import importlib.util
-
     from ..codegen.tape import TapeError
+    from .compiled import _numba_available
     from .taylor import tape_of
 
-    if importlib.util.find_spec("numba") is None:
+    if not _numba_available():
         return False
     try:
         tape_of(eqs)
@@ -117,8 +116,10 @@ def choose_method(eqs, params=None, t_span=(0.0, 1.0), y0=None, rtol: float | No
     if eqs.power_function != 0 or eqs.rayleigh != 0:
         return "LSODA", "dissipation present (P or rayleigh): possibly stiff later, LSODA switches to BDF if so"
     if rtol is not None and rtol <= 1e-11 and _taylor_ready(eqs):
+        from .taylor import taylor_order
+
         return "taylor", (f"no dissipation, non-stiff, rtol={rtol:g}: the Taylor method (order "
-                          f"{max(2, math.ceil(-math.log(rtol) / 2 + 1))}) needs fewer operations than DOP853 here")
+                          f"{taylor_order(rtol)}) needs fewer operations than DOP853 here")
     return "DOP853", "no dissipation: non-stiff, DOP853 is the most efficient explicit method"
 
 
@@ -133,11 +134,7 @@ def _power_function(model: NumericModel):
 
 
 def _state_text(model: NumericModel, y) -> str:
-    names = [coordinate_name(c) for c in model.equations.coordinates]
-    n = len(names)
-    parts = [f"{names[i]}={y[i]:.6g}" for i in range(n)]
-    parts += [f"{names[i]}{VELOCITY_SUFFIX}={y[n + i]:.6g}" for i in range(n)]
-    return ", ".join(parts)
+    return state_text(model.equations.coordinates, y)
 
 
 def _collapse_error(model: NumericModel, res, t0: float, y0, log: StepLog | None = None) -> IntegrationError:
@@ -330,6 +327,15 @@ def _check_initial_mass_matrix(system, model: NumericModel, t0: float, y0) -> No
                           f"{np.linalg.cond(M):.2g}).{hint}", GimbalLockWarning, stacklevel=3)
 
 
+def _model_for(eqs, params, model: NumericModel | None, backend: str, crhs=None) -> NumericModel:
+    """``model`` when it was built for ``eqs`` (and no Baumgarte ``crhs`` is asked for), else ``eqs`` compiled
+    with ``params`` and ``backend`` — or with the given model's parameter values and backend."""
+    if model is not None and model.equations is eqs and crhs is None:
+        return model
+    p = params if model is None else dict(zip(eqs.numeric_parameters, model.params))
+    return compile_equations(eqs, p, backend=backend if model is None else model.backend, constraint_rhs=crhs)
+
+
 def _simulate_taylor(system, eqs, t_span, initial, params, *, model, backend, t_eval, n_points, rtol, atol,
                      max_step, events, switches, why) -> Trajectory:
     """``method="taylor"`` (:mod:`lagrange.integrate.taylor`): checks, model, initial state, run."""
@@ -340,9 +346,7 @@ def _simulate_taylor(system, eqs, t_span, initial, params, *, model, backend, t_
     if switches:
         raise TypeError("method='taylor' needs analytic equations, and this system has dry-friction sign() "
                         "switches: use method='DOP853' (events) or friction='regularize' with an RK method")
-    if model is None or model.equations is not eqs:
-        p = params if model is None else dict(zip(eqs.numeric_parameters, model.params))
-        model = compile_equations(eqs, p, backend=backend if model is None else model.backend)
+    model = _model_for(eqs, params, model, backend)
     y0 = initial_state(eqs.coordinates, initial)
     _check_initial_mass_matrix(system, model, t_span[0], y0)
     t_eval = np.linspace(t_span[0], t_span[1], n_points) if t_eval is None else t_eval
@@ -481,9 +485,7 @@ def simulate(
         backend = "numba"
     notes += [loop_note] if loop_note else []
     crhs = baumgarte_rhs(eqs, *baumgarte) if eqs.m and stabilization == "baumgarte" else None
-    if model is None or model.equations is not eqs or crhs is not None:
-        p = params if model is None else dict(zip(eqs.numeric_parameters, model.params))
-        model = compile_equations(eqs, p, backend=backend if model is None else model.backend, constraint_rhs=crhs)
+    model = _model_for(eqs, params, model, backend, crhs)
     y0 = initial_state(eqs.coordinates, initial)
     initial_report = {}
     if eqs.m:

@@ -32,11 +32,8 @@ import numpy as np
 
 from ..codegen.numeric import NumericModel
 from ..codegen.tape import Tape, build_tape
-from ..conventions import VELOCITY_SUFFIX
-from ..errors import IntegrationError
-from ..model.coordinates import coordinate_name
 from ..results.trajectory import Trajectory
-from .compiled import MAX_STEPS, LoopStatus, kernel
+from .compiled import MAX_STEPS, LoopStatus, check_output_times, kernel, stopped_error
 
 __all__ = ["taylor_order", "tape_of", "compiled_series", "integrate_taylor"]
 
@@ -50,32 +47,20 @@ def taylor_order(rtol: float) -> int:
 
 
 def tape_of(eqs) -> Tape:
-    """The tape of ``eqs``, built once per Equations object."""
-    try:
-        return _TAPES[eqs]
-    except (KeyError, TypeError):
-        pass
-    tape = build_tape(eqs)
-    try:
-        _TAPES[eqs] = tape
-    except TypeError:  # not weak-referenceable: no memo
-        pass
-    return tape
+    """The tape of ``eqs``, built once per Equations (equal equations share it)."""
+    if eqs not in _TAPES:
+        _TAPES[eqs] = build_tape(eqs)
+    return _TAPES[eqs]
 
 
 def compiled_series(tape: Tape):
     """The tape's straight-line ``series`` (:mod:`lagrange.codegen.taylor_source`), compiled by numba once per
     model and cached on disk like the other generated modules."""
     if tape not in _SERIES:
-        from ..codegen.numba_backend import import_module, purge_numba_cache, write_module
+        from ..codegen.numba_backend import load_cached
         from ..codegen.taylor_source import series_source
 
-        name, path = write_module("taylor", series_source(tape))
-        try:
-            _SERIES[tape] = import_module(name, path).series
-        except Exception:  # noqa: BLE001 - a stale or corrupted numba cache entry: purge it and rebuild once
-            purge_numba_cache(name, path)
-            _SERIES[tape] = import_module(name, path).series
+        _SERIES[tape] = load_cached("taylor", series_source(tape), "the Taylor series module").series
     return _SERIES[tape]
 
 
@@ -91,8 +76,7 @@ def integrate_taylor(model: NumericModel, t_span, y0, t_eval, *, rtol: float, at
         The run stopped early (singular mass matrix, non-finite coefficients, collapsed step, too many
         steps); ``t``, ``state`` and ``partial`` say where and what was computed.
     """
-    eqs = model.equations
-    tape = tape_of(eqs)
+    tape = tape_of(model.equations)
     t0, t1 = float(t_span[0]), float(t_span[1])
     rtol, atol, max_step = float(rtol), float(atol), float(max_step)
     if not (rtol > 0 and math.isfinite(rtol)):
@@ -102,12 +86,7 @@ def integrate_taylor(model: NumericModel, t_span, y0, t_eval, *, rtol: float, at
     if not max_step > 0:
         raise ValueError("max_step must be positive")
     rtol = max(rtol, float(np.finfo(float).eps))
-    t_eval = np.ascontiguousarray(t_eval, dtype=float)
-    if np.any(t_eval < min(t0, t1)) or np.any(t_eval > max(t0, t1)):
-        raise ValueError("Values in `t_eval` are not within `t_span`.")
-    d = np.diff(t_eval)
-    if (t1 > t0 and np.any(d <= 0)) or (t1 < t0 and np.any(d >= 0)):
-        raise ValueError("Values in `t_eval` are not properly sorted.")
+    t_eval = check_output_times(t_eval, t0, t1)
     y0 = np.asarray(y0, dtype=float)
     z0 = np.ascontiguousarray(y0 if tape.nz == y0.size else np.append(y0, 0.0))
     order = taylor_order(rtol)
@@ -116,12 +95,11 @@ def integrate_taylor(model: NumericModel, t_span, y0, t_eval, *, rtol: float, at
     if model.backend == "numba":
         code, t_end, z_end, Y, n_out, steps = k.entry("taylor_fn")(
             compiled_series(tape), tape.const_code, tape.const_vals, tape.n_slots, tape.n, tape.nz, t0, t1, z0, p,
-            rtol, atol / rtol, order, max_step, t_eval, int(max_steps))
+            atol / rtol, order, max_step, t_eval, int(max_steps))
     else:
         code, t_end, z_end, Y, n_out, steps = k.entry("taylor")(
             tape.const_code, tape.const_vals, tape.code, tape.consts, tape.n_slots, tape.n, tape.nz, tape.mass,
-            tape.force, tape.power, tape.slot_t, t0, t1, z0, p, rtol, atol / rtol, order, max_step, t_eval,
-            int(max_steps))
+            tape.force, tape.power, tape.slot_t, t0, t1, z0, p, atol / rtol, order, max_step, t_eval, int(max_steps))
     status = LoopStatus.from_code(int(code))
     n2 = 2 * tape.n
     Y = np.array(Y[:n_out])
@@ -134,10 +112,4 @@ def integrate_taylor(model: NumericModel, t_span, y0, t_eval, *, rtol: float, at
                       initial=(t0, y0.copy()))
     if ok:
         return traj
-    names = [coordinate_name(c) for c in eqs.coordinates]
-    state_txt = ", ".join([f"{nm}={z_end[i]:.6g}" for i, nm in enumerate(names)]
-                          + [f"{nm}{VELOCITY_SUFFIX}={z_end[tape.n + i]:.6g}" for i, nm in enumerate(names)])
-    raise IntegrationError(
-        f"the Taylor method stopped at t={t_end:.9g} ({state_txt}): {status.message}. The trajectory up to "
-        f"there ({n_out} output points) is in the exception's `partial` attribute.",
-        t=float(t_end), state=dict(zip(eqs.coordinates, np.array(z_end[:n2]))), partial=traj)
+    raise stopped_error("the Taylor method", status, t_end, np.array(z_end), traj)

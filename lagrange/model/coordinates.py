@@ -20,6 +20,7 @@ __all__ = [
     "delta",
     "is_coordinate",
     "coordinate_name",
+    "state_text",
     "position_symbol",
     "velocity_symbol",
     "acceleration_symbol",
@@ -83,6 +84,15 @@ def is_coordinate(obj) -> bool:
 
 def coordinate_name(q) -> str:
     return q.func.__name__
+
+
+def state_text(coords: Sequence, y) -> str:
+    """``"x=1, theta=0.5, x_dot=0, theta_dot=-2"`` for the state ``y = [q, q̇]`` of ``coords`` (6 digits), as
+    error messages name where a run stopped."""
+    names = [coordinate_name(c) for c in coords]
+    n = len(names)
+    return ", ".join([f"{names[i]}={y[i]:.6g}" for i in range(n)]
+                     + [f"{names[i]}{VELOCITY_SUFFIX}={y[n + i]:.6g}" for i in range(n)])
 
 
 def position_symbol(q) -> sp.Symbol:
