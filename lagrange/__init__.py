@@ -20,6 +20,7 @@ from .errors import (
     ParameterError,
     SingularMassMatrixError,
     SpecError,
+    SymbolicTimeoutError,
 )
 from .gauss.check import GaussCheck, check_gauss
 from .model.bodies import Force, Particle
@@ -81,6 +82,7 @@ __all__ = [
     "SingularMassMatrixError",
     "IntegrationError",
     "SpecError",
+    "SymbolicTimeoutError",
     "BackendError",
     "InconsistentConstraintError",
     "CollisionError",

@@ -308,9 +308,9 @@ def _cmd_modes(args) -> int:
 
 
 def sp_factor(e):
-    import sympy
+    from .simplification import factor
 
-    return sympy.factor(e)
+    return factor(e)
 
 
 def _cmd_hamiltonian(args) -> int:

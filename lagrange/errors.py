@@ -97,6 +97,11 @@ class SweepError(LagrangeError, ValueError):
     dependency of sweeps is missing (the message names the extra to install)."""
 
 
+class SymbolicTimeoutError(LagrangeError, TimeoutError):
+    """A sympy computation (solve, simplify) ran out of time in every attempt; see
+    :mod:`lagrange.simplification` (``$LAGRANGE_SYMPY_SECONDS`` sets the limit per attempt)."""
+
+
 __all__ = [
     "LagrangeError",
     "DeclarationError",
@@ -109,4 +114,5 @@ __all__ = [
     "SweepError",
     "InconsistentConstraintError",
     "CollisionError",
+    "SymbolicTimeoutError",
 ]

@@ -23,6 +23,7 @@ import sympy as sp
 from ..conventions import t
 from ..errors import LagrangeError
 from ..model.coordinates import to_functions, to_symbols
+from ..simplification import simplify, solve
 
 __all__ = ["driving_forces", "actuator_forces", "static_equilibrium"]
 
@@ -40,7 +41,7 @@ def driving_forces(system, motion: Mapping) -> dict:
             sub[c.diff(t, 2)] = sp.diff(motion[c], t, 2)
             sub[c.diff(t)] = sp.diff(motion[c], t)
         e = residual.subs(sub).subs({c: motion[c] for c in system.coordinates})
-        out[q] = sp.simplify(e) if sp.count_ops(e) < 300 else e
+        out[q] = simplify(e, limit=299)
     return out
 
 
@@ -59,10 +60,10 @@ def actuator_forces(system, virtual_work, unknowns: Sequence, motion: Mapping | 
     else:
         need = {q: eq.lhs - eq.rhs for q, eq in zip(system.coordinates, system.equations())}
     eqs = [sp.Eq(Fp[q], need[q]) for q in system.coordinates]
-    sol = sp.solve(eqs, list(unknowns), dict=True)
+    sol = solve(eqs, list(unknowns), dict=True, what="the driving-force equations")
     if len(sol) != 1:
         raise LagrangeError(f"the actuator forces {list(unknowns)} are not determined uniquely ({len(sol)} solutions)")
-    return {u: sp.simplify(sol[0][u]) for u in unknowns}
+    return {u: simplify(sol[0][u]) for u in unknowns}
 
 
 def static_equilibrium(system, unknowns: Sequence, params: Mapping | None = None, guess: Mapping | None = None):
@@ -74,7 +75,7 @@ def static_equilibrium(system, unknowns: Sequence, params: Mapping | None = None
     conds = [sp.sympify(e).subs(rest) for e in eqs.forcing]
     unk = [to_symbols(u, system.coordinates) for u in unknowns]
     if params is None:
-        sols = sp.solve(conds, unk, dict=True)
+        sols = solve(conds, unk, dict=True, what="the equilibrium conditions")
         return [{u: to_functions(s[to_symbols(u, system.coordinates)], system.coordinates) for u in unknowns
                  if to_symbols(u, system.coordinates) in s} for s in sols]
     by_name = {getattr(k, "name", str(k)): v for k, v in params.items()}

@@ -20,6 +20,7 @@ import sympy as sp
 
 from ..conventions import t
 from ..model.coordinates import coordinate_name, to_functions
+from ..simplification import simplify
 
 __all__ = ["HamiltonianForm", "hamiltonian"]
 
@@ -79,10 +80,10 @@ def hamiltonian(system) -> HamiltonianForm:
         vel = [(pi - bi) / M[i, i] for i, (pi, bi) in enumerate(zip(p, B))]
     else:
         vel = list(M.LUsolve(sp.Matrix(p) - B))  # no symbolic inverse: it explodes beyond 3 coordinates
-    vel = [sp.simplify(v) if sp.count_ops(v) < 120 else sp.cancel(v) for v in vel]
+    vel = [simplify(v) if sp.count_ops(v) < 120 else sp.cancel(v) for v in vel]
     to_p = dict(zip(qd, vel))
     H = sum((pi * vi for pi, vi in zip(p, vel)), sp.S.Zero) - L.subs(to_p)
-    H = sp.simplify(H) if sp.count_ops(H) < 250 else sp.cancel(sp.together(H))
+    H = simplify(H) if sp.count_ops(H) < 250 else sp.cancel(sp.together(H))
     Q = [sp.sympify(e).subs(to_p) for e in eqs.nonconservative]
     qdot = tuple(sp.diff(H, pi) for pi in p)
     pdot = tuple(-sp.diff(H, qi) + Qi for qi, Qi in zip(q, Q))

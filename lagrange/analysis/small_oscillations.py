@@ -25,6 +25,7 @@ import sympy as sp
 from ..conventions import t
 from ..errors import LagrangeError
 from ..model.coordinates import coordinate_name, position_symbol, to_functions, velocity_symbol
+from ..simplification import factor, simplify, solve
 
 __all__ = ["equilibrium_equations", "equilibria", "linearize", "LinearModel", "Modes", "normal_modes",
            "characteristic_roots"]
@@ -61,7 +62,7 @@ def equilibria(system, params: Mapping | None = None, guess: Mapping | None = No
     eqs = system.derived
     conds = [e.subs({v: 0 for v in eqs.qd}) for e in eqs.forcing]
     if params is None and symbolic:
-        sols = sp.solve(conds, list(eqs.q), dict=True)
+        sols = solve(conds, list(eqs.q), dict=True, what="the equilibrium conditions")
         return [{c: s.get(position_symbol(c), position_symbol(c)) for c in system.coordinates} for s in sols]
     p = {sp.Symbol(k) if isinstance(k, str) else k: v for k, v in (params or {}).items()}
     by_name = {getattr(k, "name", str(k)): v for k, v in p.items()}
@@ -106,7 +107,7 @@ class LinearModel:
     def characteristic_polynomial(self, lam: sp.Symbol | None = None) -> sp.Expr:
         """``|a λ² + b λ + c|`` (Wells 10.30); with b = 0 set λ = iω for ``|c − a ω²|``."""
         lam = lam or sp.Symbol("lambda")
-        return sp.factor((self.a * lam**2 + self.b * lam + self.c).det())
+        return factor((self.a * lam**2 + self.b * lam + self.c).det())
 
     def frequency_equation(self, omega: sp.Symbol | None = None) -> sp.Expr:
         """Wells' fundamental determinant ``|a ω² − c|`` (10.10)."""
@@ -116,7 +117,7 @@ class LinearModel:
     def squared_frequencies(self) -> list:
         """Symbolic roots ω² of ``|a ω² − c| = 0`` (small systems)."""
         w2 = sp.Symbol("w2")
-        return sp.solve((self.a * w2 - self.c).det(), w2)
+        return solve((self.a * w2 - self.c).det(), w2, what="the frequency equation")
 
 
 def linearize(system, about: Mapping | None = None, velocities: Mapping | None = None) -> LinearModel:
@@ -139,7 +140,7 @@ def linearize(system, about: Mapping | None = None, velocities: Mapping | None =
     b = -f.jacobian(list(eqs.qd)).subs(at)
     c = -f.jacobian(list(eqs.q)).subs(at)
     F = f.subs(at)
-    simp = lambda M: M.applyfunc(lambda e: sp.simplify(e) if sp.count_ops(e) < 200 else e)  # noqa: E731
+    simp = lambda M: M.applyfunc(lambda e: simplify(e, limit=199))  # noqa: E731
     return LinearModel(system.coordinates, simp(a), simp(b), simp(c), simp(F),
                        {q: ref[position_symbol(q)] for q in system.coordinates})
 

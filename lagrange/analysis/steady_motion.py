@@ -24,6 +24,7 @@ import sympy as sp
 
 from ..conventions import t
 from ..model.coordinates import coordinate_name, position_symbol, to_functions, velocity_symbol
+from ..simplification import simplify, solve
 from .small_oscillations import LinearModel
 
 __all__ = ["Routhian", "routhian", "steady_motion_conditions", "oscillations_about_steady_motion"]
@@ -62,7 +63,7 @@ class Routhian:
 def _bounded_simplify(e, limit: int = 120):
     """``simplify`` on small expressions only (it can take tens of seconds on a Routhian with several
     ignorable coordinates); larger ones are only put over a common denominator."""
-    return sp.simplify(e) if sp.count_ops(e) <= limit else sp.factor_terms(sp.cancel(sp.together(e)))
+    return simplify(e) if sp.count_ops(e) <= limit else sp.factor_terms(sp.cancel(sp.together(e)))
 
 
 def routhian(system, ignorable=None) -> Routhian:
@@ -75,7 +76,7 @@ def routhian(system, ignorable=None) -> Routhian:
     L = eqs.kinetic - eqs.potential
     Jd = [velocity_symbol(c) for c in ignorable]
     p = [sp.Symbol(f"p_{coordinate_name(c)}", real=True) for c in ignorable]
-    sol = sp.solve([sp.diff(L, v) - pi for v, pi in zip(Jd, p)], Jd, dict=True)
+    sol = solve([sp.diff(L, v) - pi for v, pi in zip(Jd, p)], Jd, dict=True, what="the momenta for the velocities")
     if len(sol) != 1:
         raise ValueError("the ignorable velocities cannot be solved uniquely from their momenta")
     rates = tuple(_bounded_simplify(sol[0][v]) for v in Jd)

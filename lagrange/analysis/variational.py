@@ -29,6 +29,7 @@ import sympy as sp
 from ..codegen.numeric import bind_parameters
 from ..conventions import t
 from ..errors import IntegrationError, LagrangeError
+from ..simplification import simplify
 
 __all__ = ["euler_lagrange", "action", "VariationalResult", "variational_integrate"]
 
@@ -42,7 +43,7 @@ def euler_lagrange(F, functions: Sequence, variable) -> list[sp.Eq]:
         e = sp.diff(F, y)
         for j in range(1, order + 1):
             e += (-1) ** j * sp.diff(sp.diff(F, sp.diff(y, (variable, j))), (variable, j))
-        out.append(sp.Eq(sp.simplify(e), 0))
+        out.append(sp.Eq(simplify(e), 0))
     return out
 
 

@@ -17,6 +17,7 @@ import sympy as sp
 
 from ..conventions import t
 from ..model.coordinates import coordinate_name, to_symbols
+from ..simplification import SECONDS, run_bounded
 from .compare import Mismatch, agree, numeric_points
 
 __all__ = [
@@ -305,7 +306,8 @@ class Quantity(Answer):
     description: str = "quantity"
 
     def check(self, system, ranges=None):
-        got = self.compute(system)
+        # bounded: seeded sympy, a time limit well above the slowest answer, retried with new seeds
+        got = run_bounded(self.compute, system, what=f"the answer {self.name!r}", seconds=3 * SECONDS)
         exp = self.expected
         if isinstance(got, (sp.MatrixBase, list, tuple)):
             got_l, exp_l = list(got), list(exp)

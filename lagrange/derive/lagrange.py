@@ -28,6 +28,7 @@ from ..model.coordinates import (
     to_symbols,
     velocity_symbol,
 )
+from ..simplification import is_zero, trigsimp
 from .equations import Equations
 from .multipliers import constraint_blocks
 
@@ -157,7 +158,7 @@ def _tidy_kinetic(T):
         return T
     e = _pythagoras(T)
     if e.has(sp.sin, sp.cos) and sp.count_ops(e) <= _TRIGSIMP_LIMIT:
-        e2 = sp.expand(sp.trigsimp(e))
+        e2 = sp.expand(trigsimp(e))
         e = e2 if sp.count_ops(e2) < sp.count_ops(e) else e
     # expanded sums of squares cost more operations than the compact squares they came from; accept
     # that (derivatives of the expanded form are simpler), but never a blow-up
@@ -233,16 +234,6 @@ def energy_split(system) -> tuple:
     C = T.subs(zero)
     c = eqs.coordinates
     return to_functions(A, c), to_functions(B, c), to_functions(C, c)
-
-
-def is_zero(expr, *, limit: int = 300) -> bool:
-    """True when ``expr`` is identically zero (structural test, then bounded ``simplify``)."""
-    expr = sp.sympify(expr)
-    if expr == 0:
-        return True
-    if sp.count_ops(expr) > limit:
-        return False
-    return sp.simplify(expr) == 0
 
 
 def ignorable_coordinates(system) -> dict:

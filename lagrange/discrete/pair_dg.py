@@ -35,6 +35,7 @@ import sympy as sp
 
 from ..codegen.source import print_expr
 from ..errors import IntegrationError
+from ..simplification import is_zero
 
 __all__ = ["divided_difference", "PairSystem", "DGResult"]
 
@@ -50,7 +51,7 @@ def divided_difference(phi, r: sp.Symbol) -> tuple[sp.Expr, sp.Expr, bool]:
     q = sp.cancel((phi.subs(r, _b) - phi.subs(r, _a)) / (_b - _a))
     num, den = sp.fraction(sp.together(q))
     exact = not sp.Poly(den, _a, _b).as_expr().has(_b - _a) if den.is_polynomial(_a, _b) else False
-    exact = exact and sp.simplify(den.subs(_b, _a)) != 0 and q.is_rational_function(_a, _b)
+    exact = exact and not is_zero(den.subs(_b, _a)) and q.is_rational_function(_a, _b)
     if not exact:
         q = (phi.subs(r, _b) - phi.subs(r, _a)) / (_b - _a)
     return q, sp.diff(q, _b), bool(exact)

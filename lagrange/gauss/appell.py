@@ -32,6 +32,7 @@ from ..conventions import t
 from ..model.bodies import Particle
 from ..model.coordinates import coordinate_name, to_symbols
 from ..model.rigid_body import RigidBody
+from ..simplification import is_zero
 
 __all__ = ["AppellResult", "appell_identity", "acceleration_energy"]
 
@@ -123,7 +124,7 @@ def appell_identity(system, *, max_ops: int = 400, points: int = 4, seed: int = 
         if bad:
             per[name] = "failed"
             details.append(f"{name}: {bad}")
-        elif sp.count_ops(d) <= max_ops and sp.simplify(d) == 0:
+        elif is_zero(d, limit=max_ops):
             per[name] = "verified"
         else:
             per[name] = "undecided"

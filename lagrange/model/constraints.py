@@ -26,6 +26,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from ..conventions import t
+from ..simplification import is_zero
 from .coordinates import coordinate_name, is_coordinate
 
 __all__ = [
@@ -219,7 +220,7 @@ def is_integrable(coefficients: Sequence, a_t, coords: Sequence) -> bool:
         expr = (a[i] * (sp.diff(a[k], syms[j]) - sp.diff(a[j], syms[k]))
                 + a[j] * (sp.diff(a[i], syms[k]) - sp.diff(a[k], syms[i]))
                 + a[k] * (sp.diff(a[j], syms[i]) - sp.diff(a[i], syms[j])))
-        if sp.expand(expr) != 0 and sp.simplify(expr) != 0:
+        if not is_zero(expr):
             return False
     return True
 

@@ -19,6 +19,7 @@ from collections.abc import Mapping, Sequence
 import sympy as sp
 
 from ..errors import DeclarationError
+from ..simplification import simplify, solve
 from .constraints import Holonomic, Nonholonomic
 from .coordinates import coordinate_name, is_coordinate, position_symbol
 
@@ -30,7 +31,7 @@ def _solve_for(system, q) -> sp.Expr:
     for c in system.constraints:
         if c.kind == "holonomic" and c.position.has(q):
             s = sp.Dummy(coordinate_name(q))
-            sols = sp.solve(c.position.subs(q, s), s)
+            sols = solve(c.position.subs(q, s), s, what=f"{c.name} for {coordinate_name(q)}")
             if len(sols) == 1:
                 return sols[0]
             if len(sols) > 1:
@@ -44,7 +45,7 @@ def _solve_for(system, q) -> sp.Expr:
 
 def _vanishes(expr, coords) -> bool:
     expr = sp.sympify(expr)
-    if expr == 0 or sp.simplify(expr) == 0:
+    if expr == 0 or simplify(expr) == 0:
         return True
     rng = random.Random(5)
     syms = {f: position_symbol(f) for f in coords}

@@ -18,6 +18,7 @@ from __future__ import annotations
 import sympy as sp
 
 from ..conventions import t
+from ..simplification import trigsimp
 from .bodies import as_vector
 from .rotations import rot_z
 
@@ -65,7 +66,7 @@ class Frame:
         """The frame's angular velocity along the inertial axes, from ``Ṙ Rᵀ = [ω]×``."""
         _, R = self.to_inertial()
         W = R.diff(t) * R.T
-        return sp.Matrix([W[2, 1], W[0, 2], W[1, 0]]).applyfunc(lambda e: sp.trigsimp(sp.expand(e)))
+        return sp.Matrix([W[2, 1], W[0, 2], W[1, 0]]).applyfunc(lambda e: trigsimp(sp.expand(e)))
 
 
 class EarthFrame(Frame):

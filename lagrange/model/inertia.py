@@ -37,6 +37,7 @@ import numpy as np
 import sympy as sp
 
 from ..errors import DeclarationError
+from ..simplification import is_zero, simplify
 
 __all__ = [
     "Inertia",
@@ -170,8 +171,8 @@ class Inertia:
         return cls(J[0, 0], J[1, 1], J[2, 2], -J[0, 1], -J[0, 2], -J[1, 2])
 
     def simplified(self) -> Inertia:
-        """Every component passed through ``sp.simplify``."""
-        return Inertia(*(sp.simplify(getattr(self, n)) for n in _NAMES))
+        """Every component passed through (bounded) ``sp.simplify``."""
+        return Inertia(*(simplify(getattr(self, n)) for n in _NAMES))
 
     # ----- moments about lines, the ellipsoid ----------------------------------------------------
     def about_line(self, l, m, n) -> sp.Expr:
@@ -227,7 +228,7 @@ class Inertia:
         if len(values) != 3:
             raise NotImplementedError("sympy found no closed form for the principal moments; "
                                       "use principal_axes_numeric with numbers")
-        values = [sp.simplify(v) for v in values]
+        values = [simplify(v) for v in values]
         if all(v.is_number and v.is_real for v in values):
             values.sort(key=lambda v: float(v))
         return values
@@ -351,7 +352,7 @@ def _is_zero(expr: sp.Expr) -> bool:
         return True
     if not expr.free_symbols:
         return abs(expr.evalf(30)) < 1e-20
-    return sp.simplify(expr) == 0
+    return is_zero(expr)
 
 
 def _particle(mass, r: sp.Matrix) -> Inertia:
@@ -419,11 +420,11 @@ def centre_of_mass(masses_and_positions: Iterable) -> tuple[sp.Expr, sp.Matrix]:
     """
     parts = _particles(masses_and_positions, "centre_of_mass")
     total = sum((m for m, _ in parts), sp.S.Zero)
-    return total, sp.simplify(sum((m * r for m, r in parts), sp.zeros(3, 1)) / total)
+    return total, (sum((m * r for m, r in parts), sp.zeros(3, 1)) / total).applyfunc(simplify)
 
 
 def _require_principal(inertia: Inertia, what: str) -> None:
-    if any(sp.simplify(getattr(inertia, n)) != 0 for n in _NAMES[3:]):
+    if not all(is_zero(getattr(inertia, n)) for n in _NAMES[3:]):
         raise DeclarationError("the inertia must be about principal axes (all products zero); "
                                "rotate it with principal_axes_numeric first", subject=what)
 
@@ -510,7 +511,7 @@ def spherical_points(M, inertia: Inertia, axis: str) -> sp.Expr:
     sqrt(-a**2/3 + b**2/3)
     """
     others = [k for k in "xyz" if k != axis]
-    if axis in _AXES and sp.simplify(getattr(inertia, "I_" + others[0]) - getattr(inertia, "I_" + others[1])) != 0:
+    if axis in _AXES and not is_zero(getattr(inertia, "I_" + others[0]) - getattr(inertia, "I_" + others[1])):
         raise DeclarationError(f"no spherical points on {axis}: I_{others[0]} != I_{others[1]}",
                                subject="spherical_points")
     return foci(M, inertia, axis)[others[0]]

@@ -27,6 +27,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from ..conventions import t
+from ..simplification import trigsimp
 
 __all__ = [
     "rot_x",
@@ -151,7 +152,7 @@ def _compact(e):
 
     e = _pythagoras(e)
     if sp.count_ops(e) < 60:
-        e = sp.trigsimp(e)
+        e = trigsimp(e)
     return e
 
 
