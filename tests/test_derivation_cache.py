@@ -359,3 +359,23 @@ def test_source_entries_are_content_addressed(cache):
     assert stabilised.source != plain.source
     numeric.compile_equations(pushed, params)  # the same content again: a hit
     assert calls["fuse"] == 3
+
+
+def test_cache_is_pruned_to_its_limit_oldest_first(cache, monkeypatch):
+    """Stranded entries (older sources, other declarations) do not accumulate: a write beyond the limit
+    deletes the least recently written entries, down to 90 % of the limit; files that are not entries stay."""
+    root, calls = cache
+    for i in range(12):
+        path = root / f"derived_{i:064x}.pkl"
+        path.write_bytes(b"old entry")
+        os.utime(path, (1_000_000 + i, 1_000_000 + i))
+    (root / "model_abc.py").write_text("# a generated module, not an entry\n")
+    monkeypatch.setenv(dc.MAX_ENTRIES_VAR, "10")
+    system = _declare()
+    assert system.derived is not None  # a miss: writes one entry and prunes 13 -> 9
+    names = {p.name for p in _entries(root)}
+    assert len(names) == 9
+    assert not any(f"derived_{i:064x}.pkl" in names for i in range(4))  # the four oldest went
+    assert f"derived_{11:064x}.pkl" in names and (root / "model_abc.py").exists()
+    assert _declare().derived == system.derived and calls["derive"] == 1  # the new entry survived: a hit
+    assert dc.prune(root, 100) == 0

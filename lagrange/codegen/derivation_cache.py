@@ -49,7 +49,8 @@ from sympy.printing.repr import ReprPrinter
 from ..derive.equations import Equations
 from .numba_backend import atomic_write, cache_dir
 
-__all__ = ["ENV_VAR", "enabled", "environment", "declaration_key", "equations_fingerprint", "cached_equations",
+__all__ = ["ENV_VAR", "MAX_ENTRIES_VAR", "prune",
+           "enabled", "environment", "declaration_key", "equations_fingerprint", "cached_equations",
            "cached_source"]
 
 #: environment variable that turns the cache off (``0``, ``off``, ``false``, ``no``)
@@ -70,7 +71,7 @@ def enabled() -> bool:
 
 
 #: the parts of lagrange that make the entries (the stages before integration): their source is hashed
-SOURCES = ("conventions.py", "model", "derive", "codegen")
+SOURCES = ("conventions.py", "simplification.py", "model", "derive", "codegen")
 
 
 @lru_cache(maxsize=1)
@@ -206,12 +207,47 @@ def _read(path: Path | None, key: str) -> bytes | None:
 
 
 def _write(path: Path | None, key: str, payload: bytes) -> None:
-    """Store an entry atomically; a cache that cannot be written is skipped (it only saves time)."""
+    """Store an entry atomically, then prune; a cache that cannot be written is skipped (it only saves time)."""
     if path is not None:
         try:
             atomic_write(path, _header(key, payload) + b"\n" + payload)
+            prune(path.parent)
         except OSError:
             pass
+
+
+#: entries kept (``$LAGRANGE_DERIVATION_CACHE_MAX``, default 2000): each edit of lagrange's sources, each
+#: upgrade and each changed declaration makes new entries and strands the old ones
+MAX_ENTRIES_VAR = "LAGRANGE_DERIVATION_CACHE_MAX"
+
+
+def prune(directory: Path, max_entries: int | None = None) -> int:
+    """Delete the least recently written entries (``derived_*.pkl``, ``source_*.txt``) beyond
+    ``max_entries`` (default ``$LAGRANGE_DERIVATION_CACHE_MAX`` or 2000), down to 90 % of it; returns the
+    number deleted. Called after every write (a cache miss), so the directory never grows without bound."""
+    if max_entries is None:
+        try:
+            max_entries = int(os.environ.get(MAX_ENTRIES_VAR, "2000"))
+        except ValueError:
+            max_entries = 2000
+    entries = []
+    for pattern in ("derived_*.pkl", "source_*.txt"):
+        for path in directory.glob(pattern):
+            try:
+                entries.append((path.stat().st_mtime, path))
+            except OSError:  # removed meanwhile by another process
+                pass
+    if len(entries) <= max_entries:
+        return 0
+    entries.sort()
+    removed = 0
+    for _, path in entries[: len(entries) - int(0.9 * max_entries)]:
+        try:
+            path.unlink()
+            removed += 1
+        except OSError:
+            pass
+    return removed
 
 
 def cached_equations(system, derive: Callable) -> Equations:
