@@ -207,13 +207,17 @@ def _trig_polynomial_zero(expr) -> bool:
 def is_zero(expr, *, limit: int = 300) -> bool:
     """True when ``expr`` is proven to vanish identically; False when it does not, or cannot be proven to.
 
-    Order: structural zero; numeric probe (nonzero somewhere → False); ``expand``; canonical reduction of
-    trigonometric polynomials; bounded ``simplify`` for expressions up to ``limit`` operations.
+    Order: structural zero; numeric probe (nonzero somewhere → False); then, for expressions up to ``limit``
+    operations (constants of any size), ``expand`` and the canonical reduction of trigonometric polynomials, and
+    a bounded ``simplify`` up to ``limit`` operations.
     """
     expr = sp.sympify(expr)
     if expr == 0:
         return True
     if _probe(expr) is True:
+        return False
+    big = sp.count_ops(expr) > limit
+    if big and expr.free_symbols:  # too big to prove anything about within bounded time
         return False
     if sp.expand(expr) == 0:
         return True
@@ -222,4 +226,4 @@ def is_zero(expr, *, limit: int = 300) -> bool:
             return True
     except SymbolicTimeoutError:
         pass
-    return sp.count_ops(expr) <= limit and simplify(expr) == 0
+    return not big and simplify(expr) == 0
