@@ -15,8 +15,8 @@ A simplification that does not finish is skipped (the expression is used as it i
 cannot be proven answers ``False`` (not known to vanish); a solve that does not finish raises
 :class:`~lagrange.errors.SymbolicTimeoutError`. Nothing is ever silently wrong, at worst less tidy.
 
-:func:`is_zero` decides most cases without ``simplify``: a 30-digit numeric probe at random points proves
-an expression nonzero, and a canonical reduction proves trigonometric polynomials zero.
+:func:`is_zero` decides most cases without ``simplify``: evaluation at random exact points (at 30 and 50
+digits) proves an expression nonzero, and a canonical reduction proves trigonometric polynomials zero.
 """
 
 from __future__ import annotations
@@ -97,9 +97,9 @@ def run_bounded(fn: Callable[..., _R], *args, what: str, seconds: float | None =
                                "(set LAGRANGE_SYMPY_SECONDS to allow more time)")
 
 
-def _or_input(fn, expr, what, **kwargs):
+def _or_input(fn, expr, what):
     try:
-        return run_bounded(fn, expr, what=what, **kwargs)
+        return run_bounded(fn, expr, what=what)
     except SymbolicTimeoutError:
         return expr
 
@@ -207,9 +207,9 @@ def _trig_polynomial_zero(expr) -> bool:
 def is_zero(expr, *, limit: int = 300) -> bool:
     """True when ``expr`` is proven to vanish identically; False when it does not, or cannot be proven to.
 
-    Order: structural zero; numeric probe (nonzero somewhere → False); then, for expressions up to ``limit``
-    operations (constants of any size), ``expand`` and the canonical reduction of trigonometric polynomials, and
-    a bounded ``simplify`` up to ``limit`` operations.
+    Order: structural zero; numeric probe (nonzero somewhere → False); ``expand``; the canonical reduction
+    of trigonometric polynomials; bounded ``simplify``. Above ``limit`` operations an expression with symbols
+    stops after the probe (unproven → False) and a constant skips only ``simplify``.
     """
     expr = sp.sympify(expr)
     if expr == 0:

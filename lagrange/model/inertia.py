@@ -342,7 +342,7 @@ class Inertia:
         return Inertia(*(sp.expand(getattr(self, n) - getattr(other, n)) for n in _NAMES))
 
     def equals(self, other: Inertia) -> bool:
-        """True when every component agrees (``sp.simplify``; 30 digits to 1e-20 for pure numbers)."""
+        """True when every component agrees (``is_zero`` of the difference; 30 digits to 1e-20 for pure numbers)."""
         return all(_is_zero(getattr(self, n) - getattr(other, n)) for n in _NAMES)
 
 
