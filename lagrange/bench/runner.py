@@ -195,8 +195,9 @@ class _Runner:
         self.times = problem.times()
         self.y0 = initial_vector(problem, system)
         t0 = time.perf_counter()
+        self.setup = 0.0
         self._build = getattr(self, f"_setup_{spec.kind}")()
-        self.setup = time.perf_counter() - t0
+        self.setup = time.perf_counter() - t0  # grows when a setting needs its own compilation (Taylor order)
 
     # --- lagrange simulate ---
     def _setup_simulate(self):
@@ -205,6 +206,13 @@ class _Runner:
         extra = dict(p.options) | dict(s.options) | ({"loop": s.loop} if s.loop else {})
 
         def make(tol):
+            if s.method == "taylor" and model.backend == "numba":  # the series for this order: JIT is setup
+                from ..integrate.taylor import compiled_series, tape_of, taylor_order
+
+                t0 = time.perf_counter()
+                compiled_series(tape_of(model.equations), taylor_order(tol))
+                self.setup += time.perf_counter() - t0
+
             def run():
                 sol = self.system.simulate((0.0, p.t_end), p.initial, p.params, method=s.method, rtol=tol,
                                            atol=tol * p.atol_scale, backend=s.backend, model=model,
@@ -298,6 +306,7 @@ def run_curve(problem: BenchProblem, system, spec: MethodSpec, reference: Refere
         if wall > stop:
             curve.note = f"sweep stopped after {s:g}: one run took {wall:.1f} s"
             break
+    curve.setup = runner.setup  # with the compilations of each setting
     if spec.kind == "heyoka" and getattr(runner, "compile_times", None):
         curve.setup = runner.setup + runner.compile_times[0]
         curve.note = (curve.note + "; " if curve.note else "") + (

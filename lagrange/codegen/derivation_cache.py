@@ -165,7 +165,8 @@ _FINGERPRINTS: dict[int, tuple[weakref.ref, str | None]] = {}
 
 def _remember(eqs: Equations, fingerprint: str | None) -> str | None:
     key = id(eqs)
-    _FINGERPRINTS[key] = (weakref.ref(eqs, lambda _ref: _FINGERPRINTS.pop(key, None)), fingerprint)
+    # the table is bound now: at interpreter shutdown the module's globals may already be None
+    _FINGERPRINTS[key] = (weakref.ref(eqs, lambda _ref, table=_FINGERPRINTS: table.pop(key, None)), fingerprint)
     return fingerprint
 
 

@@ -78,7 +78,12 @@ class _Builder:
         return self.next_slot - 1
 
     def emit(self, op: str, a: int = 0, b: int = 0, c: float = 0.0, *, var: bool, out: int | None = None) -> int:
+        key = ("op", op, a, b, float(c))  # the same operation on the same slots again (x*c in two CSE terms)
+        if out is None and op not in ("LOADC", "LOADP") and key in self.memo:
+            return self.memo[key]
         o = self.new() if out is None else out
+        if out is None:
+            self.memo[key] = o
         self.rows.append((var, _O[op], a, b, o, float(c)))
         if var:
             self.var.add(o)
@@ -171,8 +176,8 @@ class _Builder:
             return slot
         if e.is_Mul:
             num, den = [], []
-            for f in e.args:
-                if f.is_Pow and f.exp.is_Number and f.exp.is_negative:
+            for f in e.args:  # u**(-k) (integer k) divides; u**(-α) stays one power: one recurrence, not two
+                if f.is_Pow and f.exp.is_Integer and f.exp.is_negative:
                     den.append(self.expr(sp.Pow(f.base, -f.exp)))
                 else:
                     num.append(self.expr(f))

@@ -5,7 +5,7 @@ This is the boundary between the symbolic and the numeric stages: code generatio
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, fields
 
 import sympy as sp
 
@@ -66,6 +66,26 @@ class Equations:
     reaction_matrix: sp.ImmutableMatrix = sp.ImmutableMatrix(0, 0, [])  # B (n, m): M q̈ = f + Bλ; Aᵀ unless rough
     rough_signs: tuple = ()  # σ_k = sign(λ_k)·sign(v_s,k) symbols of rough constraints (bound per segment)
     sliding_velocities: tuple = ()  # ((k, v_s,k), ...) for rough constraints
+
+    def __hash__(self) -> int:
+        """The hash of the fields, computed once: Equations key per-model caches (tapes, switches), and hashing
+        every matrix on each lookup would cost tens of µs per ``simulate`` call."""
+        h = self.__dict__.get("_hash")
+        if h is None:
+            h = hash(tuple(getattr(self, f.name) for f in fields(self)))
+            object.__setattr__(self, "_hash", h)
+        return h
+
+    def __eq__(self, other: object) -> bool:
+        if self is other:  # the common case of cache lookups, without comparing every expression
+            return True
+        if other.__class__ is not self.__class__:
+            return NotImplemented
+        return all(getattr(self, f.name) == getattr(other, f.name) for f in fields(self))
+
+    def __getstate__(self) -> dict:
+        # sympy hashes differ between processes (string hashing is salted): never pickle the cached one
+        return {k: v for k, v in self.__dict__.items() if k != "_hash"}
 
     @property
     def n(self) -> int:

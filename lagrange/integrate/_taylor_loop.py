@@ -23,6 +23,11 @@ linear solve is done order by order: with ``a = v'``, ``M a = f`` gives
 one LDLᵀ factorization of ``M_0`` per step and one solve per order; then ``q_{k+1} = v_k/(k+1)``,
 ``v_{k+1} = a_k/(k+1)``, ``work_{k+1} = P_k/(k+1)``.
 
+Every division is written as a product with a reciprocal, ``x · (1/y)``: the reciprocals (of ``k``, of
+``u_0``, of the pivots) do not depend on the order-k sums, so in the compiled series they leave the chain of
+dependent operations that runs from one order to the next (a division's latency is several times a
+product's); the interpreter does the same arithmetic, so all three forms give equal results.
+
 Order and step (Jorba & Zou 2005, as in heyoka): with tolerance ε the order is
 ``p = ceil(−ln(ε)/2 + 1)``, and the step is ``h = ρ/e² · exp(−0.7/(p−1))`` with
 ``ρ = min_{k ∈ {p−1, p}} (N/‖z^{[k]}‖∞)^{1/k}`` and ``N = max(A, ‖z^{[0]}‖∞)``: an absolute criterion for
@@ -90,12 +95,12 @@ def _coefficient(op: int, a: int, b: int, o: int, c: float, S, k: int) -> None:
     elif op == NEG:
         S[o, k] = -S[a, k]
     elif op == DIVVC:
-        S[o, k] = S[a, k] / S[b, 0]
+        S[o, k] = S[a, k] * (1.0 / S[b, 0])
     elif op == DIV or op == DIVCV:
         s = S[a, k] if (op == DIV or k == 0) else 0.0
         for j in range(1, k + 1):
             s -= S[b, j] * S[o, k - j]
-        S[o, k] = s / S[b, 0]
+        S[o, k] = s * (1.0 / S[b, 0])
     elif op == SINCOS:  # o = sin(a), b = cos(a)
         if k == 0:
             S[o, 0] = math.sin(S[a, 0])
@@ -106,8 +111,8 @@ def _coefficient(op: int, a: int, b: int, o: int, c: float, S, k: int) -> None:
             for j in range(1, k + 1):
                 s += j * S[a, j] * S[b, k - j]
                 cc += j * S[a, j] * S[o, k - j]
-            S[o, k] = s / k
-            S[b, k] = -cc / k
+            S[o, k] = s * (1.0 / k)
+            S[b, k] = -cc * (1.0 / k)
     elif op == EXP:
         if k == 0:
             S[o, 0] = math.exp(S[a, 0])
@@ -115,7 +120,7 @@ def _coefficient(op: int, a: int, b: int, o: int, c: float, S, k: int) -> None:
             s = 0.0
             for j in range(1, k + 1):
                 s += j * S[a, j] * S[o, k - j]
-            S[o, k] = s / k
+            S[o, k] = s * (1.0 / k)
     elif op == LOG:
         if k == 0:
             S[o, 0] = math.log(S[a, 0]) if S[a, 0] > 0.0 else math.nan
@@ -123,7 +128,7 @@ def _coefficient(op: int, a: int, b: int, o: int, c: float, S, k: int) -> None:
             s = 0.0
             for j in range(1, k):
                 s += j * S[o, j] * S[a, k - j]
-            S[o, k] = (S[a, k] - s / k) / S[a, 0]
+            S[o, k] = (S[a, k] - s * (1.0 / k)) * (1.0 / S[a, 0])
     elif op == POW:
         if k == 0:
             S[o, 0] = S[a, 0] ** c
@@ -131,7 +136,7 @@ def _coefficient(op: int, a: int, b: int, o: int, c: float, S, k: int) -> None:
             s = 0.0
             for j in range(k):
                 s += (c * (k - j) - j) * S[a, k - j] * S[o, j]
-            S[o, k] = s / (k * S[a, 0])
+            S[o, k] = s * (1.0 / (k * S[a, 0]))
     elif op == LOADC:
         S[o, 0] = c
 
@@ -185,15 +190,15 @@ def _series(code, consts, n, slot_t, slot_w, mass, force, power, p_order, t, S, 
                 s -= L[i, j] * r[j]
             r[i] = s
         for i in range(n - 1, -1, -1):
-            s = r[i] / d[i]
+            s = r[i] * (1.0 / d[i])
             for j in range(i + 1, n):
                 s -= L[j, i] * acc[j, k]
             acc[i, k] = s
         for i in range(n):
-            S[i, k + 1] = S[n + i, k] / (k + 1)
-            S[n + i, k + 1] = acc[i, k] / (k + 1)
+            S[i, k + 1] = S[n + i, k] * (1.0 / (k + 1))
+            S[n + i, k + 1] = acc[i, k] * (1.0 / (k + 1))
         if slot_w >= 0:
-            S[slot_w, k + 1] = S[power, k] / (k + 1)
+            S[slot_w, k + 1] = S[power, k] * (1.0 / (k + 1))
     return True
 
 
@@ -208,14 +213,19 @@ def _horner(S, nz: int, p_order: int, x: float, out) -> None:
 
 @njit(cache=True, error_model="numpy")
 def _step_size(S, nz: int, p_order: int, floor: float) -> float:
-    """Jorba & Zou's step: ρ/e² · exp(−0.7/(p−1)), ρ from the last two orders (module docstring)."""
+    """Jorba & Zou's step: ρ/e² · exp(−0.7/(p−1)), ρ from the last two orders (module docstring); NaN when a
+    coefficient of order 0, p − 1 or p is not finite."""
     n0 = 0.0
     n1 = 0.0
     n2 = 0.0
+    bad = 0.0  # stays 0 unless a coefficient of the last two orders or of order 0 is inf or NaN
     for i in range(nz):
         n0 = max(n0, abs(S[i, 0]))
         n1 = max(n1, abs(S[i, p_order - 1]))
         n2 = max(n2, abs(S[i, p_order]))
+        bad += 0.0 * (S[i, 0] + S[i, p_order - 1] + S[i, p_order])
+    if bad != 0.0:
+        return math.nan
     scale = max(floor, n0)
     rho = math.inf
     if n1 > 0.0:
@@ -242,20 +252,24 @@ def _constants(const_code, const_vals, n_slots, n, p_order, p):
 def _advance(S, nz, p_order, floor, max_step, t, t1, direction, t_eval, n_out, Y, z):
     """After the series at ``t``: check it, take Jorba & Zou's step (writing outputs at ``t_eval`` in it and the
     new state into ``z``); ``(status, t_new, n_out)``."""
-    for i in range(nz):
-        for k in range(p_order + 1):
-            if not math.isfinite(S[i, k]):
-                return 2, t, n_out
-    h_abs = min(_step_size(S, nz, p_order, floor), max_step)
+    h_abs = _step_size(S, nz, p_order, floor)
+    if h_abs != h_abs:  # a NaN norm: non-finite coefficients
+        return 2, t, n_out
+    h_abs = min(h_abs, max_step)
     if not (h_abs >= 10.0 * abs(np.nextafter(t, direction * np.inf) - t)):
         return 1, t, n_out
     t_new = t + direction * h_abs
     if direction * (t_new - t1) >= 0.0:
         t_new = t1
+    # the new state sums every coefficient: finite exactly when they all are (checked before any output)
+    _horner(S, nz, p_order, t_new - t, z)
+    for i in range(nz):
+        if not math.isfinite(z[i]):
+            _horner(S, nz, 0, 0.0, z)  # back to the state at t
+            return 2, t, n_out
     while n_out < t_eval.size and direction * (t_eval[n_out] - t_new) <= 0.0:
         _horner(S, nz, p_order, t_eval[n_out] - t, Y[n_out])
         n_out += 1
-    _horner(S, nz, p_order, t_new - t, z)
     return 0, t_new, n_out
 
 

@@ -43,6 +43,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
+import weakref
 from typing import NamedTuple
 
 import numpy as np
@@ -71,12 +72,18 @@ class Transition(NamedTuple):
     after: str
 
 
+_SWITCHES: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
+
+
 def switching_functions(eqs: Equations) -> list:
-    """Distinct arguments ``u`` of ``sign(u)`` in the forcing (sorted for determinism)."""
-    atoms = set()
-    for e in eqs.forcing:
-        atoms |= {a.args[0] for a in e.atoms(sp.sign)}
-    return sorted(atoms, key=sp.default_sort_key)
+    """Distinct arguments ``u`` of ``sign(u)`` in the forcing (sorted for determinism); found once per
+    Equations (a tree walk of the forcing costs about 0.1 ms, which repeated short runs would pay each time)."""
+    if eqs not in _SWITCHES:
+        atoms = set()
+        for e in eqs.forcing:
+            atoms |= {a.args[0] for a in e.atoms(sp.sign)}
+        _SWITCHES[eqs] = tuple(sorted(atoms, key=sp.default_sort_key))
+    return list(_SWITCHES[eqs])
 
 
 def _replace_in(eqs: Equations, mapping: dict, new_params: tuple = ()) -> Equations:

@@ -33,7 +33,7 @@ import numpy as np
 from ..codegen.numeric import NumericModel
 from ..codegen.tape import Tape, build_tape
 from ..results.trajectory import Trajectory
-from .compiled import MAX_STEPS, LoopStatus, check_output_times, kernel, stopped_error
+from .compiled import MAX_STEPS, LoopStatus, check_output_times, first_class, kernel, stopped_error
 
 __all__ = ["taylor_order", "tape_of", "compiled_series", "integrate_taylor"]
 
@@ -53,15 +53,21 @@ def tape_of(eqs) -> Tape:
     return _TAPES[eqs]
 
 
-def compiled_series(tape: Tape):
+def compiled_series(tape: Tape, order: int | None = None):
     """The tape's straight-line ``series`` (:mod:`lagrange.codegen.taylor_source`), compiled by numba once per
-    model and cached on disk like the other generated modules."""
-    if tape not in _SERIES:
+    model and cached on disk like the other generated modules: written out for ``order`` when that stays
+    within :data:`~lagrange.codegen.taylor_source.UNROLL_TERMS` terms, else the loop form (any order)."""
+    cached = _SERIES.setdefault(tape, {})  # order (None: the loop form) -> compiled series
+    if order not in cached:
         from ..codegen.numba_backend import load_cached
-        from ..codegen.taylor_source import series_source
+        from ..codegen.taylor_source import UNROLL_TERMS, series_source, unrolled_source, unrolled_terms
 
-        _SERIES[tape] = load_cached("taylor", series_source(tape), "the Taylor series module").series
-    return _SERIES[tape]
+        if order is not None and unrolled_terms(tape, order) <= UNROLL_TERMS:
+            cached[order] = load_cached("taylor", unrolled_source(tape, order), "the Taylor series module").series
+        else:
+            cached[order] = cached[None] = cached.get(None) or load_cached("taylor", series_source(tape),
+                                                                          "the Taylor series module").series
+    return cached[order]
 
 
 def integrate_taylor(model: NumericModel, t_span, y0, t_eval, *, rtol: float, atol: float,
@@ -94,8 +100,8 @@ def integrate_taylor(model: NumericModel, t_span, y0, t_eval, *, rtol: float, at
     p = np.ascontiguousarray(model.params, dtype=float)
     if model.backend == "numba":
         code, t_end, z_end, Y, n_out, steps = k.entry("taylor_fn")(
-            compiled_series(tape), tape.const_code, tape.const_vals, tape.n_slots, tape.n, tape.nz, t0, t1, z0, p,
-            atol / rtol, order, max_step, t_eval, int(max_steps))
+            first_class(compiled_series(tape, order), k.SERIES), tape.const_code, tape.const_vals, tape.n_slots,
+            tape.n, tape.nz, t0, t1, z0, p, atol / rtol, order, max_step, t_eval, int(max_steps))
     else:
         code, t_end, z_end, Y, n_out, steps = k.entry("taylor")(
             tape.const_code, tape.const_vals, tape.code, tape.consts, tape.n_slots, tape.n, tape.nz, tape.mass,

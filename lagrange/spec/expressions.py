@@ -32,6 +32,7 @@ x**2/2 + 1/2
 from __future__ import annotations
 
 import ast
+import decimal
 import math
 import unicodedata
 from collections.abc import Mapping
@@ -121,13 +122,18 @@ def parse_expression(text: str | int | float, names: Mapping[str, sp.Basic], *,
         raise SpecError(f"{where}: {text!r} evaluates to {expr}, which is not a finite real expression")
     for number in expr.atoms(sp.Rational):  # coefficients folded into products and sums, e.g. 1e200*x*1e200
         if number != 0 and not 1 / MAX_MAGNITUDE <= abs(number) <= MAX_MAGNITUDE:
-            raise SpecError(f"{where}: the coefficient {sp.Float(number, 3)} in {text!r} is outside the "
+            raise SpecError(f"{where}: the coefficient {_short(number)} in {text!r} is outside the "
                             "floating-point range [1e-300, 1e300]")
     terms = _expanded_terms(expr, max_terms)
     if terms > max_terms:
         raise SpecError(f"{where}: {text!r} would expand to more than {max_terms} terms when multiplied out; "
                         "simplify it or split it")
     return expr
+
+
+def _short(number: sp.Rational) -> str:
+    """A rational in three significant digits (``str`` of a 10,000-digit integer raises in Python 3.11+)."""
+    return str(number.evalf(3))
 
 
 def _expanded_terms(e: sp.Basic, limit: int) -> int:
@@ -214,10 +220,13 @@ class _Builder:
             return sp.Integer(v)
         literal = (ast.get_source_segment(self.source, node) or repr(v)).replace("_", "")
         try:
-            value = sp.Rational(literal)  # exact, even where the float would overflow or underflow
-        except (TypeError, ValueError):
-            value = sp.Rational(repr(v))
-        return self.checked(value)
+            exact = decimal.Decimal(literal)
+        except decimal.InvalidOperation:
+            literal, exact = repr(v), decimal.Decimal(repr(v))
+        # decided on the decimal exponent before any integer is built: 1e999999999 would take minutes
+        if exact and not -301 <= exact.adjusted() <= 300:  # the exact bound is checked below
+            self.error(f"the constant {literal} is outside the floating-point range [1e-300, 1e300]")
+        return self.checked(sp.Rational(literal))  # exact, even where the float would overflow or underflow
 
     def name(self, ident: str) -> sp.Expr:
         if ident.startswith("_"):
@@ -282,7 +291,7 @@ class _Builder:
             self.error(f"the constant {value} is not a finite real number (division by zero or a complex value)")
         if isinstance(value, sp.Rational):
             if abs(value) > MAX_MAGNITUDE or (value != 0 and abs(value) < 1 / MAX_MAGNITUDE):
-                self.error(f"the constant {sp.Float(value, 3)} is outside the floating-point range "
+                self.error(f"the constant {_short(value)} is outside the floating-point range "
                            "[1e-300, 1e300]")
             return value
         v = self.real_value(value, "constant")

@@ -89,6 +89,71 @@ def test_interpreter_and_compiled_series_agree_exactly():
     assert "interpreted tape" in runs[0].method and "compiled series" in runs[1].method
 
 
+def _forms(system, params, order):
+    """The interpreter and both compiled forms of ``system``'s series (loop form, written out for ``order``)."""
+    from lagrange.codegen.taylor_source import UNROLL_TERMS, unrolled_terms
+    from lagrange.integrate.taylor import compiled_series, tape_of
+
+    model = system.compile(params, backend="numba")
+    tape = tape_of(model.equations)
+    assert unrolled_terms(tape, order) <= UNROLL_TERMS  # the numba backend runs the written-out form
+    return model, tape, compiled_series(tape), compiled_series(tape, order)
+
+
+@pytest.mark.parametrize("case", ["every_operation", "double_pendulum", "kepler"])
+def test_written_out_series_equals_the_loop_form_and_the_interpreter(case):
+    """The series written out for one order (small systems, numba backend) does the interpreter's arithmetic
+    in the interpreter's order: equal Taylor coefficients, hence equal states and steps."""
+    from lagrange.integrate.compiled import kernel
+
+    tol = 1e-8
+    if case == "every_operation":  # a long tape: written out at a lower order only
+        s, p, y0, tol = _all_operations_system(), {"a": 3.0}, [0.7, -0.4], 1e-5
+    elif case == "double_pendulum":
+        s, p, y0 = n_link_pendulum(2), {"g": 9.81}, [0.6, -0.3, 0.0, 0.5]
+    else:
+        s, p, y0 = kepler_system(), {"m": 1.0, "mu": 1.0}, list(KEPLER_IC.values())
+    order = taylor_order(tol)
+    model, tape, loop_form, written = _forms(s, p, order)
+    assert loop_form is not written
+    k = kernel("_taylor_loop.py", "taylorloop", "method='taylor'")
+    z = np.zeros(tape.nz)
+    z[: len(y0)] = y0
+    coefficients = []
+    for series in (loop_form, written):
+        S, acc, L, d, Mk, r = k._constants(tape.const_code, tape.const_vals, tape.n_slots, tape.n, order,
+                                           np.asarray(model.params, dtype=float))
+        S[: tape.nz, 0] = z
+        assert series(0.3, S, acc, L, d, Mk, r, order)
+        coefficients.append(S[: tape.nz].copy())
+    S, acc, L, d, Mk, r = k._constants(tape.const_code, tape.const_vals, tape.n_slots, tape.n, order,
+                                       np.asarray(model.params, dtype=float))
+    S[: tape.nz, 0] = z
+    slot_w = 2 * tape.n if tape.nz > 2 * tape.n else -1
+    assert k._series(tape.code, tape.consts, tape.n, tape.slot_t, slot_w, tape.mass, tape.force, tape.power, order,
+                     0.3, S, acc, L, d, Mk, r)
+    np.testing.assert_array_equal(coefficients[0], S[: tape.nz])
+    np.testing.assert_array_equal(coefficients[1], S[: tape.nz])
+    assert np.all(np.isfinite(S[: tape.nz])) and np.any(S[: tape.nz, order] != 0)
+    names = [c.func.__name__ for c in s.derived.coordinates]
+    ic = dict(zip(names + [nm + "_dot" for nm in names], y0))
+    runs = [s.simulate((0, 4), ic, p, method="taylor", rtol=tol, atol=tol, backend=b, n_points=9)
+            for b in ("python", "numba")]
+    np.testing.assert_array_equal(runs[0].y, runs[1].y)
+    assert runs[0].nfev == runs[1].nfev
+
+
+def test_written_out_series_refuses_another_order():
+    s = n_link_pendulum(2)
+    model, tape, _, written = _forms(s, {"g": 9.81}, 9)
+    from lagrange.integrate.compiled import kernel
+
+    k = kernel("_taylor_loop.py", "taylorloop", "method='taylor'")
+    S, acc, L, d, Mk, r = k._constants(tape.const_code, tape.const_vals, tape.n_slots, tape.n, 12,
+                                       np.asarray(model.params, dtype=float))
+    assert not written(0.0, S, acc, L, d, Mk, r, 12)
+
+
 def test_damped_oscillator_closed_form_and_dissipated_work():
     """P = −b ẋ²/2 (Wells): x = e^{−γt}(cos ωd t + γ/ωd sin ωd t); work = E(t) − E(0) ≤ 0."""
     b_ = parameters("b")
