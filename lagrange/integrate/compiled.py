@@ -286,9 +286,13 @@ def check_output_times(t_eval, t0: float, t1: float) -> np.ndarray:
     t_eval = np.ascontiguousarray(t_eval, dtype=float)
     if t_eval.ndim != 1:
         raise ValueError("t_eval must be 1-dimensional")
-    if np.any(t_eval < min(t0, t1)) or np.any(t_eval > max(t0, t1)):
+    if not t_eval.size:
+        return t_eval
+    # NaN fails every comparison: "not within" (as scipy's any(t_eval < lo) would miss it, it must not pass)
+    if not (t_eval.min() >= min(t0, t1) and t_eval.max() <= max(t0, t1)):
         raise ValueError("Values in `t_eval` are not within `t_span`.")
-    d = np.diff(t_eval)
-    if (t1 > t0 and np.any(d <= 0)) or (t1 < t0 and np.any(d >= 0)):
-        raise ValueError("Values in `t_eval` are not properly sorted.")
+    if t_eval.size > 1:
+        d = np.diff(t_eval)
+        if (t1 > t0 and not d.min() > 0) or (t1 < t0 and not d.max() < 0):
+            raise ValueError("Values in `t_eval` are not properly sorted.")
     return t_eval

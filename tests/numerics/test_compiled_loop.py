@@ -262,3 +262,27 @@ def test_loop_is_cached_on_disk_and_reused_by_a_fresh_process(tmp_path, monkeypa
     hits, misses, value = json.loads(run.stdout.strip().splitlines()[-1])
     assert min(hits) >= 1 and max(misses) == 0, run.stdout + run.stderr  # loaded from the cache, not compiled
     assert value == float(here.z[-1, 0])
+
+
+@pytest.mark.parametrize("t_eval, span, message", [
+    ([0.5, 1.5], (0.0, 1.0), "not within"),
+    ([-0.1], (0.0, 1.0), "not within"),
+    ([0.2, float("nan")], (0.0, 1.0), "not within"),  # NaN is in no interval
+    ([0.6, 0.4], (0.0, 1.0), "not properly sorted"),
+    ([0.4, 0.4], (0.0, 1.0), "not properly sorted"),
+    ([0.4, 0.6], (1.0, 0.0), "not properly sorted"),  # backward runs need descending times
+    ([[0.5]], (0.0, 1.0), "1-dimensional"),
+])
+def test_output_times_are_checked_as_scipy_checks_them(t_eval, span, message):
+    from lagrange.integrate.compiled import check_output_times
+
+    with pytest.raises(ValueError, match=message):
+        check_output_times(t_eval, *span)
+
+
+def test_valid_output_times_pass_unchanged():
+    from lagrange.integrate.compiled import check_output_times
+
+    for t_eval, span in (([], (0, 1)), ([0.0, 0.5, 1.0], (0, 1)), ([1.0, 0.25, 0.0], (1, 0)), ([0.3], (1, 0))):
+        out = check_output_times(t_eval, *span)
+        assert out.dtype == float and out.flags.c_contiguous and np.array_equal(out, np.asarray(t_eval, float))
