@@ -16,7 +16,9 @@ global error can exceed ε on long or chaotic runs (compare runs at two toleranc
 Two ways to run the tape, same arithmetic, same results: the interpreter (any model; nothing compiled
 per model) and, for a model built with ``backend="numba"``, the tape written out as straight-line code
 (:mod:`lagrange.codegen.taylor_source`) and JIT-compiled once per model (cached on disk) — faster per step,
-for long runs and repeated runs. ``Trajectory.nfev`` counts tape passes (steps × order).
+for long runs and repeated runs. Small systems get it written out for the run's order (every sum term by
+term, one compile per model and order); larger ones keep loops over the order. ``Trajectory.nfev`` counts
+tape passes (steps × order).
 
 Scope: unconstrained systems whose equations are analytic (no ``sign``/``Abs``/``Piecewise``); the work
 integral of non-conservative systems is integrated with the state. Needs numba
