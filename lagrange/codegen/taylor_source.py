@@ -77,17 +77,7 @@ def _instruction(op: str, a: int, b: int, o: int, c: float) -> list[str]:
 def _solve_lines(tape: Tape, variable: set) -> list[str]:
     """LDLᵀ of M_0 at order 0, then ``M_0 a_k = f_k − Σ_{j≥1} M_j a_{k−j}`` (variable entries of M only)."""
     n = tape.n
-    lines = ["if k == 0:"]
-    for i in range(n):
-        for j in range(n):
-            s = int(tape.mass[min(i, j), max(i, j)])
-            lines.append(f"    Mk[{i}, {j}] = {f'S[{s}, 0]' if s >= 0 else '0.0'}")
-    lines += [f"    for jj in range({n}):", "        dj = Mk[jj, jj]", "        for kk in range(jj):",
-              "            dj -= L[jj, kk] * L[jj, kk] * d[kk]", "        if not (dj > 1e-13 * abs(Mk[jj, jj])):",
-              "            return False", "        d[jj] = dj", "        L[jj, jj] = 1.0",
-              f"        for ii in range(jj + 1, {n}):", "            s = Mk[ii, jj]",
-              "            for kk in range(jj):",
-              "                s -= L[ii, kk] * L[jj, kk] * d[kk]", "            L[ii, jj] = s / dj"]
+    lines = ["if k == 0:"] + ["    " + line for line in _ldl_lines(tape, lambda s: f"S[{s}, 0]")]
     for i in range(n):
         lines.append(f"s = S[{int(tape.force[i])}, k]")
         for l_ in range(n):
@@ -103,6 +93,23 @@ def _solve_lines(tape: Tape, variable: set) -> list[str]:
     if tape.power >= 0:
         lines.append(f"S[{2 * n}, k + 1] = S[{tape.power}, k] * (1.0 / (k + 1))")
     return lines
+
+
+def _ldl_lines(tape: Tape, entry) -> list[str]:
+    """``Mk`` = M_0 (``entry(slot)``: the text of a slot's order-0 value) factorized into unit-lower ``L`` and
+    ``d``; ``return False`` when a pivot is not positive relative to its diagonal entry (1e-13), as the
+    interpreter's ``_ldl`` does."""
+    n = tape.n
+    lines = []
+    for i in range(n):
+        for j in range(n):
+            s = int(tape.mass[min(i, j), max(i, j)])
+            lines.append(f"Mk[{i}, {j}] = {entry(s) if s >= 0 else '0.0'}")
+    return lines + [f"for jj in range({n}):", "    dj = Mk[jj, jj]", "    for kk in range(jj):",
+                    "        dj -= L[jj, kk] * L[jj, kk] * d[kk]", "    if not (dj > 1e-13 * abs(Mk[jj, jj])):",
+                    "        return False", "    d[jj] = dj", "    L[jj, jj] = 1.0",
+                    f"    for ii in range(jj + 1, {n}):", "        s = Mk[ii, jj]", "        for kk in range(jj):",
+                    "            s -= L[ii, kk] * L[jj, kk] * d[kk]", "        L[ii, jj] = s / dj"]
 
 
 def series_source(tape: Tape) -> str:
@@ -223,12 +230,7 @@ def _unrolled_solve(tape: Tape, k: int, v, variable: set) -> list[str]:
 
     lines = []
     if k == 0:
-        lines += [f"Mk[{i}, {j}] = {v(m(i, j), 0) if m(i, j) >= 0 else '0.0'}" for i in range(n) for j in range(n)]
-        lines += [f"for jj in range({n}):", "    dj = Mk[jj, jj]", "    for kk in range(jj):",
-                  "        dj -= L[jj, kk] * L[jj, kk] * d[kk]", "    if not (dj > 1e-13 * abs(Mk[jj, jj])):",
-                  "        return False", "    d[jj] = dj", "    L[jj, jj] = 1.0", f"    for ii in range(jj + 1, {n}):",
-                  "        s = Mk[ii, jj]", "        for kk in range(jj):",
-                  "            s -= L[ii, kk] * L[jj, kk] * d[kk]", "        L[ii, jj] = s / dj"]
+        lines += _ldl_lines(tape, lambda s: v(s, 0))
         lines += [f"d{i} = d[{i}]" for i in range(n)] + [f"L{i}_{j} = L[{i}, {j}]" for i in range(n) for j in range(i)]
     variable = variable | {tape.slot_t}  # as in the loop form: t's first coefficient is 1
     for i in range(n):

@@ -28,9 +28,9 @@ from __future__ import annotations
 import importlib.util
 import os
 import warnings
-import weakref
 from dataclasses import dataclass
 from enum import Enum
+from functools import cache
 from pathlib import Path
 from types import ModuleType
 
@@ -170,31 +170,38 @@ def loops() -> ModuleType:
     return kernel("_rk_loops.py", "rkloops", "loop='compiled'")
 
 
-_ADDRESSES: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
+@cache
+def _address_class() -> type:
+    """The wrapper-address class of :func:`first_class` (numba is imported only when it is needed)."""
+    from numba.core.types import FunctionType, WrapperAddressProtocol
+    from numba.experimental.function_type import _get_wrapper_address
+
+    class Address(WrapperAddressProtocol):
+        def __init__(self, function, signature):
+            self.function = function  # the compiled code must outlive the address
+            self._signature = signature
+            self.address = _get_wrapper_address(function, signature)
+            self._numba_type_ = FunctionType(signature)  # numba's typeof reads this instead of rebuilding it
+
+        def __wrapper_address__(self) -> int:
+            return self.address
+
+        def signature(self):
+            return self._signature
+
+    return Address
 
 
 def first_class(function, signature):
     """``function`` (a numba dispatcher compiled for ``signature``) as a first-class function argument whose
     address is looked up once: passing the dispatcher itself makes numba resolve its compiled wrapper on
-    every call (about 18 µs, a tenth of a short Taylor run). The returned object keeps ``function`` alive."""
-    if function not in _ADDRESSES:
-        from numba.core.types import FunctionType, WrapperAddressProtocol
-        from numba.experimental.function_type import _get_wrapper_address
-
-        class _Address(WrapperAddressProtocol):
-            def __init__(self):
-                self.function = function  # the compiled code must outlive the address
-                self.address = _get_wrapper_address(function, signature)
-                self._numba_type_ = FunctionType(signature)  # numba's typeof reads this instead of rebuilding it
-
-            def __wrapper_address__(self) -> int:
-                return self.address
-
-            def signature(self):
-                return signature
-
-        _ADDRESSES[function] = _Address()
-    return _ADDRESSES[function]
+    every call (about 18 µs, a tenth of a short Taylor run). The object is kept on the dispatcher, so the two
+    live and die together."""
+    address = getattr(function, "_lagrange_address", None)
+    if address is None:
+        address = _address_class()(function, signature)
+        function._lagrange_address = address
+    return address
 
 
 def _field(model: NumericModel):
