@@ -132,6 +132,11 @@ def test_markdown_tables_have_the_expected_columns():
     # at error ≤ 1e-7: lagrange 4 ms, plain 20 ms (×5.0), heyoka 1 ms (lagrange/heyoka = 4.0)
     assert "| toy | ≤ 1e-07 | 4 ms (DOP853 python) | 20 ms (plain sympy DOP853) | 1 ms (heyoka) | ×5.0 | 4.0 |" in md
     assert "| derive | compile / JIT | integrate | total | error |" in md
+    assert "Imports are not" not in md  # none measured
+    data = _fake_data()
+    data["settings"]["imports"] = {"lagrange": 0.5, "heyoka": 0.25}
+    assert ("in a fresh process they take 500 ms (lagrange with sympy, numpy and scipy.integrate), 250 ms (heyoka)."
+            in render_markdown(data))
     section = readme_section(_fake_data())
     assert section.startswith("## Speed against error")
     assert "| toy | 4 ms (DOP853 python) | 4 ms (DOP853 python) | 20 ms (×5 / ×5.0) | 1 ms (4.0) |" in section
@@ -164,3 +169,10 @@ def test_time_to_first_result_runs_cold_in_a_fresh_process():
     assert fr.derive > 0 and fr.compile > 0 and fr.integrate > 0, fr.note
     assert fr.total == pytest.approx(fr.derive + fr.compile + fr.integrate)
     assert fr.error < 1e-4
+
+
+def test_import_times_are_measured_in_fresh_processes():
+    from lagrange.bench.first_result import import_times
+
+    t = import_times(repeats=1)
+    assert 0.01 < t["lagrange"] < 30  # sympy, numpy and scipy.integrate at least

@@ -95,3 +95,43 @@ def test_numba_cache_reused_and_corruption_recovered(tmp_path, monkeypatch):
     again = s.compile({"g": 9.81}, backend="numba").fun(0.0, y)
     assert np.array_equal(first, again)
     assert len(list(cache_dir().glob("rhs_*.py"))) == 1
+
+
+@pytest.mark.parametrize("limit", [0, 10**9])
+def test_cse_with_and_without_factor_terms_agree_with_reference(limit, monkeypatch):
+    """Expression sets above FACTOR_TERMS_LIMIT nodes skip sympy's factor_terms pre-pass of CSE: another
+    source, the same function (both sides of the limit against the uncompiled reference)."""
+    from lagrange.codegen import cse as cse_module
+
+    monkeypatch.setenv("LAGRANGE_DERIVATION_CACHE", "0")  # generate afresh, not from the source cache
+    s = n_link_pendulum(3)
+    monkeypatch.setattr(cse_module, "FACTOR_TERMS_LIMIT", limit)
+    fast = s.compile({"g": 9.81}, backend="python")
+    monkeypatch.setattr(cse_module, "FACTOR_TERMS_LIMIT", 10**9 - limit)
+    other = s.compile({"g": 9.81}, backend="python")
+    assert fast.source != other.source
+    ref = s.compile({"g": 9.81}, backend="reference")
+    rng = np.random.default_rng(3)
+    for _ in range(20):
+        y = rng.uniform(-2, 2, 6)
+        b = ref.fun(0.1, y)
+        assert np.allclose(np.asarray(fast.fun(0.1, y)), b, rtol=1e-12, atol=1e-12 * np.max(np.abs(b)))
+
+
+def test_to_symbols_replaces_derivatives_before_functions():
+    """q''(t) → q_ddot and q'(t) → q_dot as whole subtrees, then q(t) → q; the inverse restores them."""
+    from lagrange.model.coordinates import (
+        acceleration_symbol,
+        position_symbol,
+        to_functions,
+        to_symbols,
+        velocity_symbol,
+    )
+
+    x, y = coordinates("x y")
+    e = x.diff(t, 2) * sp.cos(y) + x.diff(t) ** 2 * y.diff(t) + sp.sin(x * t)
+    out = to_symbols(e, [x, y])
+    X, Y = position_symbol(x), position_symbol(y)
+    assert out == (acceleration_symbol(x) * sp.cos(Y) + velocity_symbol(x) ** 2 * velocity_symbol(y)
+                   + sp.sin(X * t))
+    assert not out.has(sp.Derivative) and not out.has(x) and to_functions(out, [x, y]) == e

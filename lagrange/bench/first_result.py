@@ -1,6 +1,8 @@
 """Time to first result: derivation + code generation/compilation + one integration, cold.
 
-Each route runs in a fresh Python process (after its imports, numba's included) with empty lagrange, numba
+Each route runs in a fresh Python process (after its imports, numba's included, and after sympy's deferred
+imports: sympy loads ``sympy.tensor`` and ``sympy.combinatorics`` on the first ``Add`` it builds, ~25 ms that
+every route pays once — heyoka's too, in the untimed ``build`` that forms T − V) with empty lagrange, numba
 and heyoka caches (``*_primed`` routes: an earlier process compiled the generic kernel, as after a first use;
 ``*_rerun`` routes: the same run once before): ``LAGRANGE_CACHE_DIR``, ``NUMBA_CACHE_DIR`` and
 ``XDG_CACHE_HOME`` (where heyoka keeps compiled code on disk, ``heyoka/cache.db``: a second process with the
@@ -23,7 +25,14 @@ from dataclasses import dataclass
 
 import numpy as np
 
-__all__ = ["ROUTES", "FirstResult", "first_result", "routes_for"]
+__all__ = ["ROUTES", "FirstResult", "first_result", "routes_for", "import_times"]
+
+#: what each package costs to import in a fresh process (:func:`import_times`; not in the route timings)
+IMPORTS = {
+    "lagrange": "import lagrange, sympy; sympy.Symbol('x') + sympy.Symbol('y')",
+    "numba": "import numba",
+    "heyoka": "import heyoka",
+}
 
 #: route → label
 ROUTES = {
@@ -34,6 +43,7 @@ ROUTES = {
     "taylor": "lagrange, taylor (interpreted tape), empty caches: includes the one-time kernel compile",
     "taylor_primed": "lagrange, taylor (interpreted tape), kernel compiled by an earlier process (new model)",
     "python_rerun": "lagrange, python backend, DOP853, re-run (derivation and code from the on-disk cache)",
+    "python_auto": "lagrange, python backend, method='auto' (its pick in the label note)",
     "taylor_rerun": "lagrange, taylor (interpreted tape), re-run (derivation, code and kernel cached)",
     "sympy": "plain sympy.physics.mechanics + lambdify(cse) + solve_ivp DOP853",
     "heyoka": "heyoka.py (lagrangian + taylor_adaptive, cold LLVM compile)",
@@ -70,7 +80,7 @@ def routes_for(problem, *, heyoka: bool) -> list[str]:
     """The routes that apply to ``problem`` (numba ones only when numba is installed)."""
     import importlib.util
 
-    out = ["python", "python_rerun"]
+    out = ["python", "python_rerun"] + ([] if problem.conservative else ["python_auto"])
     if importlib.util.find_spec("numba") is not None:
         if problem.name != "stick_slip":  # no friction switches in the compiled loop, no sign() in a Taylor series
             out += ["numba", "compiled", "compiled_primed", "taylor", "taylor_primed", "taylor_rerun"]
@@ -83,10 +93,39 @@ def routes_for(problem, *, heyoka: bool) -> list[str]:
     return out
 
 
+def import_times(repeats: int = 3) -> dict[str, float]:
+    """Median seconds of each :data:`IMPORTS` statement in a fresh process (packages not installed are
+    left out)."""
+    import importlib.util
+
+    out = {}
+    for name, stmt in IMPORTS.items():
+        if importlib.util.find_spec(name) is None:
+            continue
+        code = f"import time; t0 = time.perf_counter(); {stmt}; print(time.perf_counter() - t0)"
+        runs = []
+        for _ in range(repeats):
+            r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
+            if r.returncode == 0 and r.stdout.strip():
+                runs.append(float(r.stdout.strip().splitlines()[-1]))
+        if runs:
+            out[name] = float(np.median(runs))
+    return out
+
+
+def _warm_sympy() -> None:
+    """Trigger sympy's deferred imports (``sympy.tensor``, ``sympy.combinatorics``: first ``Add``)."""
+    import sympy as sp
+
+    a, b = sp.symbols("a b")
+    _ = (a + b) * 2
+
+
 def _child(problem_name: str, route: str, tol: float, quick: bool) -> dict:
     from .problems import get_problem
     from .runner import initial_vector
 
+    _warm_sympy()  # an import cost, not timed for any route
     p = get_problem(problem_name, quick=quick)
     times = p.times()
     if route not in ("python", "sympy") and not route.startswith("heyoka"):
@@ -118,12 +157,13 @@ def _child(problem_name: str, route: str, tol: float, quick: bool) -> dict:
     t0 = time.perf_counter()
     model = system.compile(p.params, backend=backend)
     compile_s = time.perf_counter() - t0
-    method = "taylor" if route.startswith("taylor") else "DOP853"
+    method = "taylor" if route.startswith("taylor") else "auto" if route == "python_auto" else "DOP853"
     loop = {"compiled": {"loop": "compiled"}, "numba": {"loop": "scipy"}}.get(route.split("_")[0], {})
     t0 = time.perf_counter()
     sol = system.simulate((0.0, p.t_end), p.initial, p.params, method=method, rtol=tol, atol=tol * p.atol_scale,
                           backend=backend, model=model, t_eval=times, **p.options, **loop)
-    return dict(derive=derive, compile=compile_s, integrate=time.perf_counter() - t0, states=sol.y.tolist())
+    return dict(derive=derive, compile=compile_s, integrate=time.perf_counter() - t0, states=sol.y.tolist(),
+                note=sol.method.split(" ")[0] if method == "auto" else "")
 
 
 def first_result(problem, route: str, reference_states: np.ndarray, *, tol: float = 1e-10, quick: bool = False,
@@ -131,11 +171,12 @@ def first_result(problem, route: str, reference_states: np.ndarray, *, tol: floa
     """Run ``route`` on ``problem`` in a fresh process with empty caches; error against the reference."""
     args = json.dumps(dict(problem=problem.name, route=route, tol=tol, quick=quick))
     with tempfile.TemporaryDirectory(prefix="lagrange-ttfr-") as tmp:
-        env = dict(os.environ, LAGRANGE_CACHE_DIR=tmp, NUMBA_CACHE_DIR=tmp, XDG_CACHE_HOME=tmp)
+        # the derivation cache on, as by default (empty: a cold run pays for writing its entries)
+        env = dict(os.environ, LAGRANGE_CACHE_DIR=tmp, NUMBA_CACHE_DIR=tmp, XDG_CACHE_HOME=tmp,
+                   LAGRANGE_DERIVATION_CACHE="1")
         if route.endswith("_primed"):  # an earlier process compiled the generic kernel, not this model
             subprocess.run([sys.executable, "-c", _PRIME[route]], env=env, capture_output=True, timeout=timeout)
-        if route.endswith("_rerun"):  # the same run once before, with the derivation cache on
-            env["LAGRANGE_DERIVATION_CACHE"] = "1"
+        if route.endswith("_rerun"):  # the same run once before
             subprocess.run([sys.executable, "-m", "lagrange.bench.first_result", args], env=env, capture_output=True,
                            timeout=timeout)
         try:

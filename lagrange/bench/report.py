@@ -194,11 +194,20 @@ def _energy_table(problem: dict) -> list[str]:
     return out
 
 
-def _first_result_table(problem: dict) -> list[str]:
+def _imports_text(imports: dict | None) -> str:
+    if not imports:
+        return ""
+    return (" Imports are not in these times; in a fresh process they take " + ", ".join(
+        f"{_ms(v)} ({k}{' with sympy, numpy and scipy.integrate' if k == 'lagrange' else ''})"
+        for k, v in imports.items()) + ".")
+
+
+def _first_result_table(problem: dict, imports: dict | None = None) -> list[str]:
     if not problem["first_result"]:
         return []
     out = ["Time to first result (fresh process, empty caches; DOP853/Taylor at rtol 1e-10; heyoka's derive is "
-           "heyoka.lagrangian on the T − V lagrange formed, whose cost is not counted):", "",
+           "heyoka.lagrangian on the T − V lagrange formed, whose cost is not counted)." + _imports_text(imports),
+           "",
            "| route | derive | compile / JIT | integrate | total | error |", "|---|---|---|---|---|---|"]
     for f in problem["first_result"]:
         if f["total"] is None:
@@ -246,7 +255,7 @@ def render_markdown(data: dict, *, title: str = "Speed against error: work-preci
         if fixed:
             lines += ["", "Geometric fixed-step methods (Python loop over steps, Newton on the stage equations):", "",
                       *fixed]
-        for block in (_energy_table(p), _first_result_table(p)):
+        for block in (_energy_table(p), _first_result_table(p, s.get("imports"))):
             if block:
                 lines += ["", *block]
     if extra:

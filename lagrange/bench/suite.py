@@ -54,6 +54,10 @@ def run_suite(problems: Sequence[str] | None = None, *, quick: bool = False, out
     results = [run_problem(p, quick=quick, heyoka=use_heyoka, first_result=ttfr, log=say) for p in chosen]
     settings = {"mode": "quick" if quick else "full", "repeats": 1 if quick else 3,
                 "elapsed_s": round(time.perf_counter() - t0, 1)}
+    if ttfr:
+        from .first_result import import_times
+
+        settings["imports"] = import_times()
     data = results_data(results, machine_info(), settings)
     if out is not None:
         paths = write_report(data, out, extra=extra)

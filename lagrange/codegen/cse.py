@@ -11,11 +11,19 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import sympy as sp
+from sympy.simplify import cse_opts
 
 from ..conventions import t
 from ..derive.equations import Equations
 
-__all__ = ["FusedExpressions", "fuse", "rename_map", "numeric_arguments"]
+__all__ = ["FusedExpressions", "fuse", "rename_map", "numeric_arguments", "FACTOR_TERMS_LIMIT"]
+
+#: expression-tree size (nodes of M, f and the constraint blocks, shared subtrees counted each time) above
+#: which CSE runs only sympy's cheap negation pre-pass, without ``factor_terms``. Measured
+#: (benchmarks/results/workprecision.md models): ``factor_terms`` costs 0.8 s of Greenspan's top (18,765
+#: nodes) for ~20 % fewer operations, and on the 5-link pendulum (1,235 nodes) it costs 70 ms and *adds*
+#: operations; below the limit (the textbook systems, < 100 nodes) it takes milliseconds and saves a few.
+FACTOR_TERMS_LIMIT = 1000
 
 
 def rename_map(eqs: Equations) -> dict:
@@ -81,7 +89,9 @@ def fuse(eqs: Equations, *, extra: tuple = (), constraint_rhs=None) -> tuple[Fus
     bidx = [(j, r) for r in range(eqs.m) for j in range(n) if B[j, r] != 0] if eqs.is_rough else []
     exprs += [B[j, r].xreplace(ren) for j, r in bidx]
     exprs += [sp.sympify(e).xreplace(ren) for e in extra]
-    repl, red = sp.cse(exprs, symbols=sp.numbered_symbols("c", real=True), optimizations="basic")
+    size = sum(1 for e in exprs for _ in sp.preorder_traversal(e))
+    optimizations = "basic" if size <= FACTOR_TERMS_LIMIT else [(cse_opts.sub_pre, cse_opts.sub_post)]
+    repl, red = sp.cse(exprs, symbols=sp.numbered_symbols("c", real=True), optimizations=optimizations)
     k = len(idx)
     ka = k + n + len(aidx)
     fused = FusedExpressions(

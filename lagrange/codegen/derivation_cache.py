@@ -104,7 +104,17 @@ def _known(cls: type) -> bool:
 
 class _KeyPrinter(ReprPrinter):
     """``srepr`` that also prints the assumptions of undefined functions (plain ``srepr`` drops them:
-    ``Function('x', real=True)`` and ``Function('x')`` print alike) and refuses unknown sympy classes."""
+    ``Function('x', real=True)`` and ``Function('x')`` print alike) and refuses unknown sympy classes.
+
+    Terms and factors are printed in the order sympy stores them (``order="none"``), not re-sorted for
+    display: the stored order is already canonical (``Add``/``Mul`` sort their arguments with
+    ``Basic.compare``, which depends on content only, not on hashes), and skipping the display sort makes
+    the key of a large model about 3× cheaper (Greenspan's top: 0.37 s → 0.12 s). Should two equal
+    expressions ever print differently, the cost is a cache miss, never a wrong answer.
+    """
+
+    def __init__(self):
+        super().__init__({"order": "none"})
 
     def _print(self, expr, **kwargs):
         if isinstance(expr, sp.Basic) and not _known(type(expr)):

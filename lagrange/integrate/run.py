@@ -313,11 +313,11 @@ def _gimbal_hint(system) -> str:
 def _check_initial_mass_matrix(system, model: NumericModel, t0: float, y0) -> None:
     """Raise on a singular mass matrix (naming coordinates, with a gimbal-lock hint for Euler angles) and
     warn when it is nearly singular."""
+    hint = _gimbal_hint(system)
     try:
         model.fun(t0, y0)
     except SingularMassMatrixError as exc:
-        raise SingularMassMatrixError(str(exc).rstrip(".") + "." + _gimbal_hint(system)) from None
-    hint = _gimbal_hint(system)
+        raise SingularMassMatrixError(str(exc).rstrip(".") + "." + hint) from None
     if hint and not model.m:
         M, _ = model.mass_and_forcing(t0, y0)
         w = np.abs(np.linalg.eigvalsh(M))  # M is symmetric: its 2-norm condition number, at half the cost of SVD

@@ -7,7 +7,8 @@ velocity and printing shows dots. Derivations work on plain symbols (``q``, ``q_
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Sequence
+from collections.abc import Sequence
+from functools import lru_cache
 
 import sympy as sp
 from sympy.core.function import AppliedUndef
@@ -143,21 +144,26 @@ def delta(expr):
     return out
 
 
-def _derivative_map(coords: Iterable, order: int) -> dict:
+@lru_cache(maxsize=256)
+def _symbol_map(coords: tuple) -> dict:
+    """``{q''(t): q_ddot, q'(t): q_dot, q(t): q}`` for ``coords`` (memoized: building the derivatives is the
+    costly part). Callers must not mutate it."""
     m = {}
     for q in coords:
-        if order >= 2:
-            m[q.diff(t, 2)] = acceleration_symbol(q)
+        m[q.diff(t, 2)] = acceleration_symbol(q)
         m[q.diff(t)] = velocity_symbol(q)
+        m[q] = position_symbol(q)
     return m
 
 
 def to_symbols(expr, coords: Sequence):
-    """Replace ``q(t)``, ``q'(t)``, ``q''(t)`` by the plain symbols ``q``, ``q_dot``, ``q_ddot``."""
-    expr = sp.sympify(expr)
-    # Derivatives first (highest order first), then the functions themselves.
-    expr = expr.subs(_derivative_map(coords, 2))
-    return expr.subs({q: position_symbol(q) for q in coords})
+    """Replace ``q(t)``, ``q'(t)``, ``q''(t)`` by the plain symbols ``q``, ``q_dot``, ``q_ddot``.
+
+    One structural replacement (``xreplace``, outermost match first, so ``q''(t)`` becomes ``q_ddot`` before
+    its inner ``q(t)`` is reached); a fraction of the cost of ``subs``, which tries algebraic matches that
+    cannot occur here (the derivatives of a coordinate are atoms of the expression tree).
+    """
+    return sp.sympify(expr).xreplace(_symbol_map(tuple(coords)))
 
 
 def to_functions(expr, coords: Sequence):

@@ -65,7 +65,7 @@ class Frame:
     def angular_velocity(self) -> sp.Matrix:
         """The frame's angular velocity along the inertial axes, from ``Ṙ Rᵀ = [ω]×``."""
         _, R = self.to_inertial()
-        W = R.diff(t) * R.T
+        W = R.applyfunc(lambda e: e.diff(t)) * R.T
         return sp.Matrix([W[2, 1], W[0, 2], W[1, 0]]).applyfunc(lambda e: trigsimp(sp.expand(e)))
 
 

@@ -98,7 +98,7 @@ class RigidBody:
     def kinetic_energy(self) -> sp.Expr:
         """Wells (8.10) with v₀ and ω along the body axes."""
         w = self.angular_velocity
-        v0 = self.origin.diff(t)
+        v0 = self.origin.applyfunc(lambda e: e.diff(t))
         T = sp.Rational(1, 2) * self.mass * (v0.T * v0)[0, 0] + sp.Rational(1, 2) * (w.T * self.inertia * w)[0, 0]
         if any(c != 0 for c in self.com):
             v0_body = self.R.T * v0

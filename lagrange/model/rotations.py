@@ -161,7 +161,7 @@ def body_angular_velocity(orientation) -> sp.Matrix:
     if isinstance(orientation, (EulerAngles, Quaternion)):
         return orientation.body_angular_velocity()
     R = as_rotation(orientation)
-    return _vee(R.T * R.diff(t)).applyfunc(_compact)
+    return _vee(R.T * R.applyfunc(lambda e: e.diff(t))).applyfunc(_compact)
 
 
 def space_angular_velocity(orientation) -> sp.Matrix:
