@@ -92,3 +92,60 @@ def test_nlink_derivation_is_compact():
     s = n_link_pendulum(5)
     ops = sp.count_ops(list(s.derived.mass_matrix)) + sp.count_ops(list(s.derived.forcing))
     assert ops < 3000
+
+
+def _both_paths(system, monkeypatch):
+    """The equations derived with symengine (when installed) and with sympy alone."""
+    from lagrange.derive import lagrange as derive_module
+
+    fast = derive_module.lagrange_equations(system)
+    with monkeypatch.context() as m:
+        m.setattr(derive_module, "_symengine_derivatives", lambda *args: None)
+        slow = derive_module.lagrange_equations(system)
+    return fast, slow
+
+
+def test_symengine_and_sympy_derivatives_are_the_same_expressions(monkeypatch):
+    """Every corpus system whose T symengine takes (a sample of every 7th, all chapters): M, f and the
+    Jacobi integral agree symbolically (their difference simplifies to zero)."""
+    import pytest
+
+    pytest.importorskip("symengine")
+    from lagrange.corpus import all_problems
+    from lagrange.derive.lagrange import _symengine_derivatives
+    from lagrange.model.coordinates import position_symbol, to_symbols, velocity_symbol
+
+    checked = 0
+    for problem in all_problems()[::7]:
+        s = problem.system
+        if s is None or s.constraints:
+            continue
+        coords = s.coordinates
+        T = to_symbols(s.T, coords)
+        q, qd = [position_symbol(c) for c in coords], [velocity_symbol(c) for c in coords]
+        if _symengine_derivatives(T, q, qd) is None:
+            continue
+        fast, slow = _both_paths(s, monkeypatch)
+        for a, b in [*zip(fast.mass_matrix, slow.mass_matrix), *zip(fast.forcing, slow.forcing),
+                     (fast.jacobi, slow.jacobi)]:
+            assert is_zero(a - b), (problem.id, a, b)
+        checked += 1
+    assert checked >= 20
+
+
+def test_symengine_is_skipped_for_what_it_cannot_carry_back(monkeypatch):
+    """Floats, functions it does not convert back unchanged and same-named symbols of different assumptions
+    take the sympy path; a symbol's assumptions survive the symengine round trip."""
+    import pytest
+
+    pytest.importorskip("symengine")
+    from lagrange.derive.lagrange import _symengine_derivatives
+
+    q, qd = sp.Symbol("q", real=True), sp.Symbol("q_dot", real=True)
+    m = sp.Symbol("m", positive=True)
+    assert _symengine_derivatives(sp.Float("0.1", 30) * qd**2, [q], [qd]) is None
+    assert _symengine_derivatives(sp.Abs(q) * qd**2, [q], [qd]) is None
+    assert _symengine_derivatives((m + sp.Symbol("m")) * qd**2, [q], [qd]) is None
+    dT, hessian, conv = _symengine_derivatives(m * sp.cos(q) * qd**2 / 2, [q], [qd])
+    assert hessian[0, 0] == m * sp.cos(q) and hessian[0, 0].free_symbols == {m, q}
+    assert sp.simplify(conv[0] - (-m * sp.sin(q) * qd**2 + m * sp.sin(q) * qd**2 / 2)) == 0

@@ -16,10 +16,10 @@ else ``~/.cache/lagrange``), next to the numba modules:
 
 :func:`environment` names the entry format, the lagrange version *and a hash of the source files of the
 stages that make the entries* (:data:`SOURCES`: an edited checkout never reuses an entry made by other
-code), the sympy and Python versions and the machine. Each entry starts with one header line holding its
-key, the SHA-256 of its payload and the environment; an entry whose header does not match (damaged,
-truncated, renamed, or written by other versions) is ignored and rebuilt, so a stale or damaged entry
-never gives a wrong answer. Writes are atomic (:func:`~lagrange.codegen.numba_backend.atomic_write`). A
+code), the sympy, symengine (or its absence) and Python versions and the machine. Each entry starts with
+one header line holding its key, the SHA-256 of its payload and the environment; an entry whose header does
+not match (damaged, truncated, renamed, or written by other versions) is ignored and rebuilt, so a stale or
+damaged entry never gives a wrong answer. Writes are atomic (:func:`~lagrange.codegen.numba_backend.atomic_write`). A
 declaration holding a sympy class defined outside sympy and lagrange (a user's ``Function`` subclass: its
 behaviour is not in its ``srepr``) is never cached. Entries are pickles: like the generated modules next to
 them, the cache directory must be writable by you only.
@@ -85,12 +85,22 @@ def _source_digest() -> str:
     return h.hexdigest()
 
 
+@lru_cache(maxsize=1)
+def _symengine_version() -> str:
+    """symengine's version, or "none": it differentiates T when installed, which orders terms differently."""
+    try:
+        import symengine
+    except ImportError:
+        return "none"
+    return symengine.__version__
+
+
 def environment() -> str:
     """Everything besides the model that an entry depends on: the entry format, the lagrange version and
-    the hash of its source files, the sympy and Python versions and the machine (one line)."""
+    the hash of its source files, the sympy, symengine and Python versions and the machine (one line)."""
     version = getattr(sys.modules.get("lagrange"), "__version__", "unknown")
     text = (f"format {_FORMAT}; lagrange {version} source {_source_digest()[:20]}; sympy {sp.__version__}; "
-            f"python {sys.version}; {platform.machine()}")
+            f"symengine {_symengine_version()}; python {sys.version}; {platform.machine()}")
     return " ".join(text.split())
 
 

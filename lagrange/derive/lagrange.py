@@ -65,19 +65,17 @@ def lagrange_equations(system) -> Equations:
     D = to_symbols(system.rayleigh, coords)
     F = [_tidy_force(to_symbols(system.forces[c], coords)) for c in coords]
 
-    dT_dqd = [sp.diff(T, v) for v in qd]
+    dT_dqd, hessian, convectives = kinetic_derivatives(T, q, qd)
     M = sp.zeros(n, n)
     for i in range(n):
         for j in range(i, n):
-            M[i, j] = M[j, i] = _tidy_force(sp.diff(dT_dqd[i], qd[j]))
+            M[i, j] = M[j, i] = _tidy_force(hessian[i, j])
     inertial = []
     forcing = []
     potential_gradient = []
     dissipative = []
     for i in range(n):
-        # d/dt(dT/dqd_i) without the qdd part, minus dT/dq_i
-        convective = sum((sp.diff(dT_dqd[i], q[j]) * qd[j] for j in range(n)), sp.S.Zero)
-        convective += sp.diff(dT_dqd[i], t) - sp.diff(T, q[i])
+        convective = convectives[i]
         inertial.append(sum((M[i, j] * qdd[j] for j in range(n)), sp.S.Zero) + convective)
         dV = sp.diff(V, q[i])
         potential_gradient.append(dV)
@@ -122,6 +120,70 @@ def lagrange_equations(system) -> Equations:
         name=system.name,
         **blocks,
     )
+
+
+def kinetic_derivatives(T, q, qd) -> tuple[list, dict, list]:
+    r"""The derivatives of T that Lagrange's equations need:
+    ``(∂T/∂q̇_r, {(r, j): ∂²T/∂q̇_r∂q̇_j for r ≤ j}, c_r)`` with the convective terms
+    :math:`c_r = \sum_j \frac{\partial^2 T}{\partial\dot q_r\partial q_j}\dot q_j
+    + \frac{\partial^2 T}{\partial\dot q_r\partial t} - \frac{\partial T}{\partial q_r}`
+    (``d/dt ∂T/∂q̇_r − ∂T/∂q_r`` without its ``M q̈`` part).
+
+    Differentiated by symengine when it is installed (``pip install "lagrange[fast]"``) and T holds only
+    what it represents exactly (:func:`_symengine_derivatives`), else by sympy; the two give the same
+    expressions up to the order of terms (tests/test_derive.py compares them). Measured with the rest of the
+    derivation (benchmarks/results/derivation.md): Greenspan's top 0.74 s → 0.19 s, a 10-link pendulum
+    0.78 s → 0.21 s, the textbook systems ×1.2–1.6.
+    """
+    fast = _symengine_derivatives(T, q, qd)
+    if fast is not None:
+        return fast
+    n = len(q)
+    dT = [sp.diff(T, v) for v in qd]
+    hessian = {(i, j): sp.diff(dT[i], qd[j]) for i in range(n) for j in range(i, n)}
+    conv = [sum((sp.diff(dT[i], q[j]) * qd[j] for j in range(n)), sp.S.Zero) + sp.diff(dT[i], t) - sp.diff(T, q[i])
+            for i in range(n)]
+    return dT, hessian, conv
+
+
+#: sympy classes that symengine represents exactly and converts back unchanged (with Add, Mul, Pow, plain
+#: symbols, integers and rationals)
+_SYMENGINE_FUNCTIONS = (sp.sin, sp.cos, sp.tan, sp.exp, sp.log, sp.sinh, sp.cosh, sp.tanh,
+                        sp.asin, sp.acos, sp.atan)
+_SYMENGINE_ATOMS = (sp.Add, sp.Mul, sp.Pow, sp.Integer, sp.Rational, type(sp.pi), type(sp.E), *_SYMENGINE_FUNCTIONS)
+
+
+def _symengine_derivatives(T, q, qd):
+    """:func:`kinetic_derivatives` by symengine, or None (not installed; T holds a float, whose precision
+    the round trip could change, a function symengine does not carry back unchanged, a ``Dummy`` or two
+    symbols of one name, whose assumptions the round trip would confuse; or symengine failed)."""
+    try:
+        import symengine as se
+    except ImportError:
+        return None
+    symbols = T.free_symbols | set(q) | set(qd) | {t}
+    by_name = {s.name: s for s in symbols}
+    if len(by_name) != len(symbols) or any(type(s) is not sp.Symbol for s in symbols):
+        return None
+    if not all(isinstance(node, _SYMENGINE_ATOMS) or type(node) is sp.Symbol for node in sp.preorder_traversal(T)):
+        return None
+    back = {sp.Symbol(name): s for name, s in by_name.items() if sp.Symbol(name) != s}
+
+    def to_sympy(e):
+        out = sp.sympify(e)
+        return out.xreplace(back) if back else out
+
+    n = len(q)
+    try:
+        Ts = se.sympify(T)
+        qs, qds, ts = [se.Symbol(v.name) for v in q], [se.Symbol(v.name) for v in qd], se.Symbol(t.name)
+        dT = [Ts.diff(v) for v in qds]
+        hessian = {(i, j): to_sympy(dT[i].diff(qds[j])) for i in range(n) for j in range(i, n)}
+        conv = [to_sympy(sum((dT[i].diff(qs[j]) * qds[j] for j in range(n)), se.Integer(0)) + dT[i].diff(ts)
+                         - Ts.diff(qs[i])) for i in range(n)]
+        return [to_sympy(e) for e in dT], hessian, conv
+    except (RuntimeError, TypeError, ValueError, NotImplementedError, AttributeError, sp.SympifyError):
+        return None
 
 
 _TIDY_LIMIT = 400
