@@ -97,25 +97,48 @@ def test_numba_cache_reused_and_corruption_recovered(tmp_path, monkeypatch):
     assert len(list(cache_dir().glob("rhs_*.py"))) == 1
 
 
-@pytest.mark.parametrize("limit", [0, 10**9])
-def test_cse_with_and_without_factor_terms_agree_with_reference(limit, monkeypatch):
-    """Expression sets above FACTOR_TERMS_LIMIT nodes skip sympy's factor_terms pre-pass of CSE: another
-    source, the same function (both sides of the limit against the uncompiled reference)."""
+def test_cse_variants_agree_with_reference(monkeypatch):
+    """The three CSE routes — sympy with factor_terms (small sets), symengine's CSE and sympy without
+    factor_terms (large sets, with and without symengine) — give different sources for the same function,
+    checked against the uncompiled reference; temporaries keep their real assumption."""
     from lagrange.codegen import cse as cse_module
 
     monkeypatch.setenv("LAGRANGE_DERIVATION_CACHE", "0")  # generate afresh, not from the source cache
     s = n_link_pendulum(3)
-    monkeypatch.setattr(cse_module, "FACTOR_TERMS_LIMIT", limit)
-    fast = s.compile({"g": 9.81}, backend="python")
-    monkeypatch.setattr(cse_module, "FACTOR_TERMS_LIMIT", 10**9 - limit)
-    other = s.compile({"g": 9.81}, backend="python")
-    assert fast.source != other.source
+    sources = {}
+    variants = [("small", 10**9, True), ("sympy", 0, False)]
+    if cse_module.symengine() is not None:
+        variants.append(("symengine", 0, True))
     ref = s.compile({"g": 9.81}, backend="reference")
     rng = np.random.default_rng(3)
-    for _ in range(20):
-        y = rng.uniform(-2, 2, 6)
-        b = ref.fun(0.1, y)
-        assert np.allclose(np.asarray(fast.fun(0.1, y)), b, rtol=1e-12, atol=1e-12 * np.max(np.abs(b)))
+    states = [rng.uniform(-2, 2, 6) for _ in range(20)]
+    for name, limit, with_symengine in variants:
+        with monkeypatch.context() as m:
+            m.setattr(cse_module, "FACTOR_TERMS_LIMIT", limit)
+            if not with_symengine:
+                m.setattr(cse_module, "_symengine_cse", lambda exprs: None)
+            fused, _ = cse_module.fuse(s.derived)
+            assert all(c.is_real for c, _ in fused.temporaries)
+            model = s.compile({"g": 9.81}, backend="python")
+        sources[name] = model.source
+        for y in states:
+            b = ref.fun(0.1, y)
+            assert np.allclose(np.asarray(model.fun(0.1, y)), b, rtol=1e-12, atol=1e-12 * np.max(np.abs(b))), name
+    assert len(set(sources.values())) == len(sources)
+
+
+def test_symengine_cse_refuses_what_it_cannot_carry_back():
+    import pytest
+
+    pytest.importorskip("symengine")
+    from lagrange.codegen.cse import _symengine_cse
+
+    y0, x0 = sp.symbols("y0 x0", real=True)
+    assert _symengine_cse([sp.sign(y0) * sp.sin(y0), sp.sin(y0) ** 2]) is None  # sign: not carried
+    assert _symengine_cse([sp.Float("0.1", 30) * sp.sin(y0)]) is None  # a float's precision
+    assert _symengine_cse([x0 * sp.sin(y0), sp.sin(y0) ** 2]) is None  # clashes with symengine's names
+    repl, red = _symengine_cse([sp.sin(y0) * 2, sp.sin(y0) ** 2])
+    assert repl == [(sp.Symbol("c0", real=True), sp.sin(y0))] and red[1] == sp.Symbol("c0", real=True) ** 2
 
 
 def test_to_symbols_replaces_derivatives_before_functions():

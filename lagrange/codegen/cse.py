@@ -15,14 +15,16 @@ from sympy.simplify import cse_opts
 
 from ..conventions import t
 from ..derive.equations import Equations
+from ..symengine_bridge import Restorer, carries, symengine
 
 __all__ = ["FusedExpressions", "fuse", "rename_map", "numeric_arguments", "FACTOR_TERMS_LIMIT"]
 
 #: expression-tree size (nodes of M, f and the constraint blocks, shared subtrees counted each time) above
-#: which CSE runs only sympy's cheap negation pre-pass, without ``factor_terms``. Measured
-#: (benchmarks/results/workprecision.md models): ``factor_terms`` costs 0.8 s of Greenspan's top (18,765
-#: nodes) for ~20 % fewer operations, and on the 5-link pendulum (1,235 nodes) it costs 70 ms and *adds*
-#: operations; below the limit (the textbook systems, < 100 nodes) it takes milliseconds and saves a few.
+#: which CSE skips sympy's ``factor_terms`` pre-pass: symengine's CSE when installed, else sympy's with its
+#: cheap negation pre-pass only. Measured (benchmarks/results/workprecision.md models): ``factor_terms``
+#: cost 0.8 s of Greenspan's top (18,765 nodes) for ~20 % fewer operations, and on the 5-link pendulum
+#: (1,235 nodes) 70 ms while *adding* operations; below the limit (the textbook systems, < 100 nodes) it
+#: takes milliseconds and saves a few.
 FACTOR_TERMS_LIMIT = 1000
 
 
@@ -89,9 +91,7 @@ def fuse(eqs: Equations, *, extra: tuple = (), constraint_rhs=None) -> tuple[Fus
     bidx = [(j, r) for r in range(eqs.m) for j in range(n) if B[j, r] != 0] if eqs.is_rough else []
     exprs += [B[j, r].xreplace(ren) for j, r in bidx]
     exprs += [sp.sympify(e).xreplace(ren) for e in extra]
-    size = sum(1 for e in exprs for _ in sp.preorder_traversal(e))
-    optimizations = "basic" if size <= FACTOR_TERMS_LIMIT else [(cse_opts.sub_pre, cse_opts.sub_post)]
-    repl, red = sp.cse(exprs, symbols=sp.numbered_symbols("c", real=True), optimizations=optimizations)
+    repl, red = _cse(exprs)
     k = len(idx)
     ka = k + n + len(aidx)
     fused = FusedExpressions(
@@ -104,3 +104,40 @@ def fuse(eqs: Equations, *, extra: tuple = (), constraint_rhs=None) -> tuple[Fus
         reaction={jr: e for jr, e in zip(bidx, red[ka + eqs.m : ka + eqs.m + len(bidx)])} if bidx else None,
     )
     return fused, tuple(red[ka + eqs.m + len(bidx) :])
+
+
+def _cse(exprs: list) -> tuple[list, list]:
+    """``sympy.cse`` of ``exprs`` with temporaries ``c0, c1, …`` (real). Small sets (at most
+    :data:`FACTOR_TERMS_LIMIT` nodes) get sympy's ``factor_terms`` pre-pass; larger ones are handed to
+    symengine's CSE when installed and ``exprs`` are what it carries back exactly
+    (:func:`lagrange.symengine_bridge.carries`), else to sympy's with its negation pre-pass only."""
+    size = sum(1 for e in exprs for _ in sp.preorder_traversal(e))
+    if size <= FACTOR_TERMS_LIMIT:
+        return sp.cse(exprs, symbols=sp.numbered_symbols("c", real=True), optimizations="basic")
+    fast = _symengine_cse(exprs)
+    if fast is not None:
+        return fast
+    return sp.cse(exprs, symbols=sp.numbered_symbols("c", real=True),
+                  optimizations=[(cse_opts.sub_pre, cse_opts.sub_post)])
+
+
+def _symengine_cse(exprs: list) -> tuple[list, list] | None:
+    """symengine's CSE of ``exprs`` in sympy form, temporaries renamed ``c0, c1, …`` in order, or None
+    (symengine not installed, ``exprs`` not carried exactly, a name clash with symengine's ``x0, x1, …``,
+    or a symengine failure). Measured on Greenspan's top: 145 → 60 ms including both conversions, 657 → 674
+    operations."""
+    se = symengine()
+    if se is None or not carries(exprs):
+        return None
+    free = set().union(*(e.free_symbols for e in exprs)) if exprs else set()
+    if any(s.name.startswith("x") for s in free):
+        return None
+    try:
+        repl, red = se.cse([se.sympify(e) for e in exprs])
+        names = {se.Symbol(str(sym)): se.Symbol(f"c{k}") for k, (sym, _) in enumerate(repl)}
+        restore = Restorer(free | {sp.Symbol(f"c{k}", real=True) for k in range(len(repl))})
+        out_repl = [(restore(names[sym]), restore(e.xreplace(names) if names else e)) for sym, e in repl]
+        out_red = [restore(e.xreplace(names) if names else e) for e in red]
+    except (RuntimeError, TypeError, ValueError, NotImplementedError, AttributeError, KeyError, sp.SympifyError):
+        return None
+    return out_repl, out_red

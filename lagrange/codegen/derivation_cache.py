@@ -71,7 +71,7 @@ def enabled() -> bool:
 
 
 #: the parts of lagrange that make the entries (the stages before integration): their source is hashed
-SOURCES = ("conventions.py", "simplification.py", "model", "derive", "codegen")
+SOURCES = ("conventions.py", "simplification.py", "symengine_bridge.py", "model", "derive", "codegen")
 
 
 @lru_cache(maxsize=1)
@@ -88,11 +88,10 @@ def _source_digest() -> str:
 @lru_cache(maxsize=1)
 def _symengine_version() -> str:
     """symengine's version, or "none": it differentiates T when installed, which orders terms differently."""
-    try:
-        import symengine
-    except ImportError:
-        return "none"
-    return symengine.__version__
+    from ..symengine_bridge import symengine
+
+    se = symengine()
+    return "none" if se is None else se.__version__
 
 
 def environment() -> str:

@@ -30,6 +30,7 @@ from ..model.coordinates import (
     velocity_symbol,
 )
 from ..simplification import is_zero
+from ..symengine_bridge import Restorer, carries, symengine
 from .equations import Equations
 from .multipliers import constraint_blocks
 
@@ -130,8 +131,8 @@ def kinetic_derivatives(T, q, qd) -> tuple[list, dict, list]:
     (``d/dt ∂T/∂q̇_r − ∂T/∂q_r`` without its ``M q̈`` part).
 
     Differentiated by symengine when it is installed (``pip install "lagrange[fast]"``) and T holds only
-    what it represents exactly (:func:`_symengine_derivatives`), else by sympy; the two give the same
-    expressions up to the order of terms (tests/test_derive.py compares them). Measured with the rest of the
+    what it carries back exactly (:func:`lagrange.symengine_bridge.carries`), else by sympy; the two give the
+    same expressions up to the order of terms (tests/test_derive.py compares them). Measured with the rest of the
     derivation (benchmarks/results/derivation.md): Greenspan's top 0.74 s → 0.19 s, a 10-link pendulum
     0.78 s → 0.21 s, the textbook systems ×1.2–1.6.
     """
@@ -146,33 +147,14 @@ def kinetic_derivatives(T, q, qd) -> tuple[list, dict, list]:
     return dT, hessian, conv
 
 
-#: sympy classes that symengine represents exactly and converts back unchanged (with Add, Mul, Pow, plain
-#: symbols, integers and rationals)
-_SYMENGINE_FUNCTIONS = (sp.sin, sp.cos, sp.tan, sp.exp, sp.log, sp.sinh, sp.cosh, sp.tanh,
-                        sp.asin, sp.acos, sp.atan)
-_SYMENGINE_ATOMS = (sp.Add, sp.Mul, sp.Pow, sp.Integer, sp.Rational, type(sp.pi), type(sp.E), *_SYMENGINE_FUNCTIONS)
-
-
 def _symengine_derivatives(T, q, qd):
-    """:func:`kinetic_derivatives` by symengine, or None (not installed; T holds a float, whose precision
-    the round trip could change, a function symengine does not carry back unchanged, a ``Dummy`` or two
-    symbols of one name, whose assumptions the round trip would confuse; or symengine failed)."""
-    try:
-        import symengine as se
-    except ImportError:
+    """:func:`kinetic_derivatives` by symengine, or None: not installed, T holds something symengine does
+    not carry back unchanged (:func:`lagrange.symengine_bridge.carries`), or symengine failed."""
+    se = symengine()
+    symbols = set(q) | set(qd) | {t}
+    if se is None or not carries([T], symbols):
         return None
-    symbols = T.free_symbols | set(q) | set(qd) | {t}
-    by_name = {s.name: s for s in symbols}
-    if len(by_name) != len(symbols) or any(type(s) is not sp.Symbol for s in symbols):
-        return None
-    if not all(isinstance(node, _SYMENGINE_ATOMS) or type(node) is sp.Symbol for node in sp.preorder_traversal(T)):
-        return None
-    back = {sp.Symbol(name): s for name, s in by_name.items() if sp.Symbol(name) != s}
-
-    def to_sympy(e):
-        out = sp.sympify(e)
-        return out.xreplace(back) if back else out
-
+    to_sympy = Restorer(T.free_symbols | symbols)
     n = len(q)
     try:
         Ts = se.sympify(T)

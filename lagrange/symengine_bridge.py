@@ -1,0 +1,60 @@
+"""The optional symengine fast path: which sympy expressions symengine carries exactly, and the round trip.
+
+symengine (``pip install "lagrange[fast]"``) differentiates and eliminates common subexpressions tens of
+times faster than sympy. lagrange uses it only where the result is provably the same expression:
+:func:`carries` admits Add, Mul, Pow, integers, rationals, π, e, the elementary functions of
+:data:`FUNCTIONS` and plain symbols with distinct names — no floats (their precision could change), no
+``Abs``/``sign``/``Piecewise`` or user functions (not converted back unchanged), no ``Dummy`` and no two
+symbols of one name (the round trip keys symbols by name and restores their assumptions). Anything else
+takes the sympy path, as does everything when symengine is not installed.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+from types import ModuleType
+
+import sympy as sp
+
+__all__ = ["FUNCTIONS", "symengine", "carries", "Restorer"]
+
+#: elementary functions symengine represents exactly and converts back to the same sympy class
+FUNCTIONS = (sp.sin, sp.cos, sp.tan, sp.exp, sp.log, sp.sinh, sp.cosh, sp.tanh, sp.asin, sp.acos, sp.atan)
+_NODES = (sp.Add, sp.Mul, sp.Pow, sp.Integer, sp.Rational, type(sp.pi), type(sp.E), *FUNCTIONS)
+
+
+def symengine() -> ModuleType | None:
+    """The symengine module, or None when it is not installed."""
+    try:
+        import symengine as se
+    except ImportError:
+        return None
+    return se
+
+
+def carries(exprs: Iterable, symbols: Iterable = ()) -> bool:
+    """Whether every node of ``exprs`` is one symengine carries back unchanged and the free symbols of
+    ``exprs`` together with ``symbols`` have distinct names (and none is a ``Dummy``)."""
+    seen: dict[str, sp.Symbol] = {}
+    for s in symbols:
+        if type(s) is not sp.Symbol or seen.setdefault(s.name, s) != s:
+            return False
+    for e in exprs:
+        for node in sp.preorder_traversal(e):
+            if type(node) is sp.Symbol:
+                if seen.setdefault(node.name, node) != node:
+                    return False
+            elif not isinstance(node, _NODES):
+                return False
+    return True
+
+
+class Restorer:
+    """symengine → sympy with the original symbols (and their assumptions) restored by name."""
+
+    def __init__(self, symbols: Iterable[sp.Symbol]):
+        self._back = {sp.Symbol(s.name): s for s in symbols if sp.Symbol(s.name) != s}
+
+    def __call__(self, expr) -> sp.Expr:
+        out = sp.sympify(expr)
+        return out.xreplace(self._back) if self._back else out
