@@ -3,7 +3,9 @@
 Each (model, path) runs in a fresh process (sympy's caches cold, its deferred imports and symengine's import
 done first and not timed): ``lagrange.derive.lagrange.lagrange_equations`` on the model's System, the
 derivation cache off. The "sympy" path forces :func:`lagrange.derive.lagrange.kinetic_derivatives` to its
-sympy branch; the "symengine" path is the default when symengine is installed (``lagrange[fast]``). Both
+sympy branch; the "symengine" path uses symengine for every model — lagrange itself does so only from
+``SYMENGINE_MIN_NODES`` nodes of T, because the symengine import (not timed here) costs more than it saves on
+smaller ones. Both
 must give the same mass matrix and forcing: checked at random states in every run. Writes
 ``benchmarks/results/derivation.md``::
 
@@ -19,7 +21,7 @@ import sys
 from pathlib import Path
 
 RESULTS = Path(__file__).parent / "results"
-MODELS = ["kepler", "double_pendulum", "top", "stiff", "nlink", "nlink10", "greenspan"]
+MODELS = ["kepler", "double_pendulum", "top", "stiff", "nlink3", "nlink4", "nlink", "nlink10", "greenspan"]
 
 _CHILD = r"""
 import json, os, sys, time
@@ -32,11 +34,12 @@ _warm_sympy()
 name, path = sys.argv[1], sys.argv[2]
 if path == "symengine":
     import symengine  # noqa: F401 - an import, not timed
+    L.SYMENGINE_MIN_NODES = 0  # every model: what symengine does where lagrange would not use it
 else:
     L._symengine_derivatives = lambda *args: None
-if name == "nlink10":
+if name.startswith("nlink") and name != "nlink":
     from lagrange.examples import n_link_pendulum
-    system = n_link_pendulum(10)
+    system = n_link_pendulum(int(name[5:]))
 else:
     from lagrange.bench.problems import get_problem
     system = get_problem(name).build()
@@ -69,7 +72,9 @@ def main() -> None:
              f"Machine: {m['cpu']}, {m['cores']} logical cores. Versions: "
              + ", ".join(f"{k} {v}" for k, v in m["versions"].items() if v) + ".", "",
              "`lagrange_equations` in a fresh process per cell (median of 3), derivation cache off, imports "
-             "(sympy's deferred ones and symengine) not timed. symengine differentiates T (∂T/∂q̇, the Hessian M, "
+             "(sympy's deferred ones and symengine, 20–40 ms) not timed: lagrange uses symengine only from "
+             "`SYMENGINE_MIN_NODES` = 75 nodes of T (the 3-link pendulum), where it pays for its import. "
+             "symengine differentiates T (∂T/∂q̇, the Hessian M, "
              "the convective terms); everything else (tidying, forces, constraints) is sympy in both columns. "
              "Agreement: max relative difference of M and f at 5 random states.", "",
              "| model | sympy | symengine | sympy / symengine | agreement |", "|---|---|---|---|---|"]

@@ -130,11 +130,12 @@ def kinetic_derivatives(T, q, qd) -> tuple[list, dict, list]:
     + \frac{\partial^2 T}{\partial\dot q_r\partial t} - \frac{\partial T}{\partial q_r}`
     (``d/dt ∂T/∂q̇_r − ∂T/∂q_r`` without its ``M q̈`` part).
 
-    Differentiated by symengine when it is installed (``pip install "lagrange[fast]"``) and T holds only
-    what it carries back exactly (:func:`lagrange.symengine_bridge.carries`), else by sympy; the two give the
-    same expressions up to the order of terms (tests/test_derive.py compares them). Measured with the rest of the
+    Differentiated by symengine when it is installed (``pip install "lagrange[fast]"``), T has at least
+    :data:`SYMENGINE_MIN_NODES` nodes and holds only what symengine carries back exactly
+    (:func:`lagrange.symengine_bridge.carries`), else by sympy; the two give the same expressions up to the
+    order of terms (tests/test_derive.py compares them). Measured with the rest of the
     derivation (benchmarks/results/derivation.md): Greenspan's top 0.74 s → 0.19 s, a 10-link pendulum
-    0.78 s → 0.21 s, the textbook systems ×1.2–1.6.
+    0.78 s → 0.21 s.
     """
     fast = _symengine_derivatives(T, q, qd)
     if fast is not None:
@@ -147,9 +148,20 @@ def kinetic_derivatives(T, q, qd) -> tuple[list, dict, list]:
     return dT, hessian, conv
 
 
+#: kinetic energies smaller than this (expression nodes) are differentiated by sympy even when symengine is
+#: installed: importing symengine (20–40 ms, once per process) costs more than it saves there. Measured
+#: (fresh processes, import included): double pendulum (T of 45 nodes) 20 ms by sympy, 31 ms with symengine;
+#: 3-link pendulum (79 nodes) 44 against 39 ms; 4-link (121) 102 against 48 ms; 5-link (171) 163 against
+#: 68 ms. Decided by size alone, so a model's derived form never depends on what a process imported before.
+SYMENGINE_MIN_NODES = 75
+
+
 def _symengine_derivatives(T, q, qd):
-    """:func:`kinetic_derivatives` by symengine, or None: not installed, T holds something symengine does
-    not carry back unchanged (:func:`lagrange.symengine_bridge.carries`), or symengine failed."""
+    """:func:`kinetic_derivatives` by symengine, or None: T below :data:`SYMENGINE_MIN_NODES`, symengine
+    not installed, T holds something it does not carry back unchanged
+    (:func:`lagrange.symengine_bridge.carries`), or symengine failed."""
+    if sum(1 for _ in sp.preorder_traversal(T)) < SYMENGINE_MIN_NODES:
+        return None
     se = symengine()
     symbols = set(q) | set(qd) | {t}
     if se is None or not carries([T], symbols):
