@@ -87,11 +87,15 @@ def _source_digest() -> str:
 
 @lru_cache(maxsize=1)
 def _symengine_version() -> str:
-    """symengine's version, or "none": it differentiates T when installed, which orders terms differently."""
-    from ..symengine_bridge import symengine
+    """symengine's installed version, or "none" (it differentiates large T's when installed, which orders
+    terms differently). Read from the package metadata: importing symengine (20–40 ms) is left to the models
+    that use it."""
+    import importlib.metadata
 
-    se = symengine()
-    return "none" if se is None else se.__version__
+    try:
+        return importlib.metadata.version("symengine")
+    except importlib.metadata.PackageNotFoundError:
+        return "none"
 
 
 def environment() -> str:
