@@ -16,11 +16,13 @@ from types import ModuleType
 
 import sympy as sp
 
-__all__ = ["FUNCTIONS", "symengine", "carries", "Restorer"]
+__all__ = ["FUNCTIONS", "FAILURES", "symengine", "carries", "Restorer"]
 
 #: elementary functions symengine represents exactly and converts back to the same sympy class
 FUNCTIONS = (sp.sin, sp.cos, sp.tan, sp.exp, sp.log, sp.sinh, sp.cosh, sp.tanh, sp.asin, sp.acos, sp.atan)
 _NODES = (sp.Add, sp.Mul, sp.Pow, sp.Integer, sp.Rational, type(sp.pi), type(sp.E), *FUNCTIONS)
+#: what a failed symengine call or conversion raises; the caller then takes the sympy path
+FAILURES = (RuntimeError, TypeError, ValueError, NotImplementedError, AttributeError, sp.SympifyError)
 
 
 def symengine() -> ModuleType | None:

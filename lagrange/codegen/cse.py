@@ -15,7 +15,7 @@ from sympy.simplify import cse_opts
 
 from ..conventions import t
 from ..derive.equations import Equations
-from ..symengine_bridge import Restorer, carries, symengine
+from ..symengine_bridge import FAILURES, Restorer, carries, symengine
 
 __all__ = ["FusedExpressions", "fuse", "rename_map", "numeric_arguments", "FACTOR_TERMS_LIMIT"]
 
@@ -134,10 +134,10 @@ def _symengine_cse(exprs: list) -> tuple[list, list] | None:
         return None
     try:
         repl, red = se.cse([se.sympify(e) for e in exprs])
-        names = {se.Symbol(str(sym)): se.Symbol(f"c{k}") for k, (sym, _) in enumerate(repl)}
+        names = {sym: se.Symbol(f"c{k}") for k, (sym, _) in enumerate(repl)}
         restore = Restorer(free | {sp.Symbol(f"c{k}", real=True) for k in range(len(repl))})
-        out_repl = [(restore(names[sym]), restore(e.xreplace(names) if names else e)) for sym, e in repl]
-        out_red = [restore(e.xreplace(names) if names else e) for e in red]
-    except (RuntimeError, TypeError, ValueError, NotImplementedError, AttributeError, KeyError, sp.SympifyError):
+        out_repl = [(restore(names[sym]), restore(e.xreplace(names))) for sym, e in repl]
+        out_red = [restore(e.xreplace(names)) for e in red]
+    except FAILURES:
         return None
     return out_repl, out_red

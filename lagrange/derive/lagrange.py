@@ -30,7 +30,7 @@ from ..model.coordinates import (
     velocity_symbol,
 )
 from ..simplification import is_zero
-from ..symengine_bridge import Restorer, carries, symengine
+from ..symengine_bridge import FAILURES, Restorer, carries, symengine
 from .equations import Equations
 from .multipliers import constraint_blocks
 
@@ -176,7 +176,7 @@ def _symengine_derivatives(T, q, qd):
         conv = [to_sympy(sum((dT[i].diff(qs[j]) * qds[j] for j in range(n)), se.Integer(0)) + dT[i].diff(ts)
                          - Ts.diff(qs[i])) for i in range(n)]
         return [to_sympy(e) for e in dT], hessian, conv
-    except (RuntimeError, TypeError, ValueError, NotImplementedError, AttributeError, sp.SympifyError):
+    except FAILURES:
         return None
 
 

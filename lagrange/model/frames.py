@@ -20,6 +20,7 @@ import sympy as sp
 from ..conventions import t
 from ..simplification import trigsimp
 from .bodies import as_vector
+from .coordinates import time_derivative
 from .rotations import rot_z
 
 __all__ = ["Frame", "EarthFrame", "OMEGA_EARTH"]
@@ -65,7 +66,7 @@ class Frame:
     def angular_velocity(self) -> sp.Matrix:
         """The frame's angular velocity along the inertial axes, from ``Ṙ Rᵀ = [ω]×``."""
         _, R = self.to_inertial()
-        W = R.applyfunc(lambda e: e.diff(t)) * R.T
+        W = time_derivative(R) * R.T
         return sp.Matrix([W[2, 1], W[0, 2], W[1, 0]]).applyfunc(lambda e: trigsimp(sp.expand(e)))
 
 

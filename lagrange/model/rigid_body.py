@@ -23,8 +23,8 @@ from functools import cached_property
 
 import sympy as sp
 
-from ..conventions import t
 from .bodies import as_vector
+from .coordinates import time_derivative
 from .inertia import Inertia
 from .rotations import EulerAngles, Quaternion, as_rotation, body_angular_velocity
 
@@ -98,7 +98,7 @@ class RigidBody:
     def kinetic_energy(self) -> sp.Expr:
         """Wells (8.10) with v₀ and ω along the body axes."""
         w = self.angular_velocity
-        v0 = self.origin.applyfunc(lambda e: e.diff(t))
+        v0 = time_derivative(self.origin)
         T = sp.Rational(1, 2) * self.mass * (v0.T * v0)[0, 0] + sp.Rational(1, 2) * (w.T * self.inertia * w)[0, 0]
         if any(c != 0 for c in self.com):
             v0_body = self.R.T * v0

@@ -28,6 +28,7 @@ import sympy as sp
 
 from ..conventions import t
 from ..simplification import trigsimp
+from .coordinates import time_derivative
 
 __all__ = [
     "rot_x",
@@ -161,7 +162,7 @@ def body_angular_velocity(orientation) -> sp.Matrix:
     if isinstance(orientation, (EulerAngles, Quaternion)):
         return orientation.body_angular_velocity()
     R = as_rotation(orientation)
-    return _vee(R.T * R.applyfunc(lambda e: e.diff(t))).applyfunc(_compact)
+    return _vee(R.T * time_derivative(R)).applyfunc(_compact)
 
 
 def space_angular_velocity(orientation) -> sp.Matrix:
