@@ -19,27 +19,16 @@ from .runner import EnergyRun, _numba_ok, initial_vector
 __all__ = ["energy_runs"]
 
 
-def _fixed_energy(problem: BenchProblem, system, hm, method: str, h: float, n_points: int) -> EnergyRun:
-    from ..integrate.fixed import GEOMETRIC
-
-    scheme = GEOMETRIC[method](hm, tol=1e-13)
-    y0 = initial_vector(problem, system)
-    n = hm.n
-    T = problem.long_t_end
-    steps = max(1, int(round(T / h)))
-    h = T / steps
-    stride = max(1, steps // n_points)
-    z = np.concatenate([y0[:n], hm.to_momenta(0.0, y0[:n], y0[n:])])
-    ts, Hs = [0.0], [hm.H(0.0, z)]
+def _fixed_energy(problem: BenchProblem, system, model, method: str, h: float, n_points: int,
+                  loop: str) -> EnergyRun:
+    kw = dict(method=method, step=h, model=model, loop=loop)
+    if loop == "compiled":  # load or JIT-compile the pieces and the kernel, untimed
+        system.simulate((0.0, h), problem.initial, problem.params, n_points=2, **kw)
     t0 = time.perf_counter()
-    for k in range(steps):
-        z, _ = scheme.step(k * h, z, h)
-        if (k + 1) % stride == 0:
-            ts.append((k + 1) * h)
-            Hs.append(hm.H((k + 1) * h, z))
+    sol = system.simulate((0.0, problem.long_t_end), problem.initial, problem.params, n_points=n_points + 1, **kw)
     wall = time.perf_counter() - t0
-    H = np.array(Hs)
-    return EnergyRun(f"{method} h={h:.3g}", np.array(ts), np.abs(H - H[0]) / abs(H[0]), wall)
+    label = f"{method}{' compiled loop' if loop == 'compiled' else ''} h={h:g}"
+    return EnergyRun(label, sol.t, _relative(model, sol.t, sol.y), wall)
 
 
 def _relative(model, t, Y) -> np.ndarray:
@@ -74,22 +63,21 @@ def energy_runs(problem: BenchProblem, system, *, quick: bool = False, heyoka: b
     """Long runs of ``problem`` (conservative, with ``long_t_end``): ``(runs, notes)``.
 
     Methods: the geometric fixed-step methods at ``problem.long_steps[0]`` (implicit midpoint, GL4, discrete
-    gradient, Störmer–Verlet when separable; GL4 only when ``quick``), DOP853 (numba backend with scipy's
+    gradient, Störmer–Verlet when separable; GL4 only when ``quick``), stepped in Python and, with numba, by
+    the compiled loop, DOP853 (numba backend with scipy's
     loop at rtol 1e-8 and 1e-10, and the compiled loop at 1e-8; python backend at 1e-8 when ``quick``) and
     heyoka at machine precision.
     """
-    from ..integrate.hamiltonian_model import hamiltonian_model
-
     if not (problem.conservative and problem.geometric and problem.long_t_end):
         return [], []
     backend = "numba" if _numba_ok() and not quick else "python"
     model = system.compile(problem.params, backend=backend)
     scipy_loop = {"loop": "scipy"} if backend == "numba" else {}
     runs, notes = [], []
-    hm = hamiltonian_model(system, problem.params)
     fixed = ["gl4"] if quick else ["midpoint", "gl4", "dg"] + (["verlet"] if problem.separable else [])
-    for m in fixed:
-        runs.append(_fixed_energy(problem, system, hm, m, problem.long_steps[0], n_points))
+    for loop in ("scipy", "compiled") if backend == "numba" else ("scipy",):
+        for m in fixed:
+            runs.append(_fixed_energy(problem, system, model, m, problem.long_steps[0], n_points, loop))
     for tol in (1e-8,) if quick else (1e-8, 1e-10):
         runs.append(_simulate_energy(problem, system, model, f"DOP853 {backend} rtol {tol:g}", n_points,
                                      method="DOP853", rtol=tol, atol=tol, backend=backend, **scipy_loop))

@@ -253,8 +253,8 @@ def render_markdown(data: dict, *, title: str = "Speed against error: work-preci
         lines += _problem_table(p, ("simulate", "sympy", "heyoka"), lambda v: f"tol {v:.0e}")
         fixed = _problem_table(p, ("fixed",), lambda v: f"h = {v:g}")
         if fixed:
-            lines += ["", "Geometric fixed-step methods (Python loop over steps, Newton on the stage equations):", "",
-                      *fixed]
+            lines += ["", "Geometric fixed-step methods (Newton on the stage equations; steps in Python or in the "
+                      "compiled loop):", "", *fixed]
         for block in (_energy_table(p), _first_result_table(p, s.get("imports"))):
             if block:
                 lines += ["", *block]

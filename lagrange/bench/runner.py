@@ -117,7 +117,8 @@ def _numba_ok() -> bool:
 def method_specs(problem: BenchProblem, *, quick: bool = False, heyoka: bool = True) -> list[MethodSpec]:
     """The methods compared on ``problem``: scipy methods × backends through ``simulate`` (numba with
     ``loop="scipy"``), the compiled loop (DOP853, RK45), ``method="auto"`` on the stiff problem, the
-    geometric methods (conservative problems), the plain sympy route (pendulums) and heyoka.
+    geometric methods (conservative problems; Python and compiled step loops), the plain sympy route
+    (pendulums) and heyoka.
 
     ``quick``: the python backend only (no JIT), DOP853 and LSODA, GL4, the plain route's DOP853, heyoka.
     """
@@ -140,7 +141,10 @@ def method_specs(problem: BenchProblem, *, quick: bool = False, heyoka: bool = T
                                     options=(("friction", "regularize"), ("friction_epsilon", eps))))
     if problem.conservative and problem.geometric:
         fixed = ["gl4"] if quick else ["midpoint", "gl4", "gl6", "dg"] + (["verlet"] if problem.separable else [])
-        specs += [MethodSpec(f"{m} (fixed step)", kind="fixed", method=m) for m in fixed]
+        specs += [MethodSpec(f"{m} (fixed step)", kind="fixed", method=m, loop="scipy") for m in fixed]
+        if not quick and _numba_ok():
+            specs += [MethodSpec(f"{m} compiled loop (fixed step)", kind="fixed", method=m, loop="compiled")
+                      for m in fixed]
     if problem.pendulum_links:
         specs += [MethodSpec(f"plain sympy {m}", kind="sympy", method=m) for m in scipy_methods if m != "Radau"]
     if heyoka and not friction:
@@ -222,26 +226,18 @@ class _Runner:
         make(1e-3)()  # warm-up; raises TypeError when an option is not supported
         return make
 
-    # --- geometric fixed-step methods on a prebuilt Hamiltonian model ---
+    # --- geometric fixed-step methods (Python or compiled step loop) ---
     def _setup_fixed(self):
-        from ..integrate.fixed import GEOMETRIC
-        from ..integrate.hamiltonian_model import hamiltonian_model
+        p, s = self.problem, self.spec
+        model = self.system.compile(p.params)  # the trajectory's model; the steps use the Hamiltonian pieces
 
-        hm = hamiltonian_model(self.system, self.problem.params)
-        scheme = GEOMETRIC[self.spec.method](hm, tol=1e-13)
-        n, T = hm.n, self.problem.t_end
-        q0, qd0 = self.y0[:n], self.y0[n:]
-
-        def make(h):
-            steps = max(1, int(round(T / h)))
-            hh = T / steps
-
+        def make(h, t_end=p.t_end):
             def run():
-                z = np.concatenate([q0, hm.to_momenta(0.0, q0, qd0)])
-                for k in range(steps):
-                    z, _ = scheme.step(k * hh, z, hh)
-                return np.concatenate([z[:n], hm.grad(T, z)[n:]])[None, :], None
+                sol = self.system.simulate((0.0, t_end), p.initial, p.params, method=s.method, step=h, n_points=2,
+                                           model=model, loop=s.loop or "scipy")
+                return sol.y[-1:], None
             return run
+        make(1e-3, 1e-3)()  # warm-up: builds H (and, compiled, loads or JIT-compiles the pieces and the kernel)
         return make
 
     # --- the plain sympy route ---

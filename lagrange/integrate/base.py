@@ -13,6 +13,9 @@ Rules a scheme must follow:
    with the last residual) when Newton fails — never return an unconverged step. The driver
    (:mod:`lagrange.integrate.fixed`) adds the step number, the state and the partial trajectory.
 4. The scheme's coefficients are data at the top of its file, with the reference.
+5. ``loop="compiled"`` runs a transcription of the scheme in :mod:`lagrange.integrate._geometric_loops`
+   (selected in :func:`lagrange.integrate.fixed._run_compiled`); a new scheme needs one there too, and
+   ``tests/numerics/test_geometric.py`` compares the two step by step.
 """
 
 from __future__ import annotations

@@ -1,6 +1,10 @@
 """Driver of the fixed-step geometric integrators: (q, q̇) → (q, p), stepping, back to a Trajectory.
 
-``simulate(..., method=name, step=h)`` with ``name`` in :data:`GEOMETRIC` dispatches here.
+``simulate(..., method=name, step=h)`` with ``name`` in :data:`GEOMETRIC` dispatches here. The steps run
+either in Python (the schemes of :mod:`~lagrange.integrate.gauss_legendre`,
+:mod:`~lagrange.integrate.stormer_verlet`, :mod:`~lagrange.integrate.discrete_gradient`) or, with
+``loop="compiled"`` (the default for numba models, see :func:`fixed_loop`), in the compiled loop of
+:mod:`lagrange.integrate._geometric_loops` — the same schemes transcribed, nothing in Python per step.
 """
 
 from __future__ import annotations
@@ -10,25 +14,50 @@ import math
 import numpy as np
 
 from ..conventions import VELOCITY_SUFFIX
-from ..errors import IntegrationError
+from ..errors import BackendError, IntegrationError
 from ..model.coordinates import coordinate_name
 from ..results.trajectory import Trajectory
 from .discrete_gradient import DiscreteGradient
-from .gauss_legendre import GaussLegendre4, GaussLegendre6, ImplicitMidpoint
+from .gauss_legendre import TABLEAUX, GaussLegendre4, GaussLegendre6, ImplicitMidpoint, _Gauss
 from .hamiltonian_model import hamiltonian_model
 from .stormer_verlet import StormerVerlet
 
-__all__ = ["GEOMETRIC", "integrate_fixed"]
+__all__ = ["GEOMETRIC", "integrate_fixed", "fixed_loop"]
 
 #: name → scheme
 GEOMETRIC = {cls.name: cls for cls in (ImplicitMidpoint, GaussLegendre4, GaussLegendre6, StormerVerlet,
                                        DiscreteGradient)}
 
 
+def fixed_loop(loop: str, *, backend: str, model=None) -> bool:
+    """Whether a fixed-step run uses the compiled loop (:mod:`lagrange.integrate._geometric_loops`).
+
+    ``loop="compiled"`` always (needs numba), ``"scipy"`` never (the step loop in Python; scipy has no such
+    methods), ``"auto"`` when the model's backend (or the requested one) is numba — as for the adaptive
+    methods. Raises :class:`TypeError` for an unknown ``loop`` and :class:`BackendError` when numba is missing.
+    """
+    from .compiled import LOOPS, _numba_available
+
+    if loop not in LOOPS:
+        raise TypeError(f"loop must be one of {', '.join(map(repr, LOOPS))}, got {loop!r}")
+    if loop == "scipy":
+        return False
+    if loop == "compiled":
+        if not _numba_available():
+            raise BackendError("loop='compiled' needs numba: install it with `pip install lagrange[fast]`")
+        return True
+    if model is not None:
+        return model.backend == "numba"
+    return backend == "numba" or (backend == "auto" and _numba_available())
+
+
 def integrate_fixed(system, t_span, y0, params, *, method: str, step: float, n_points: int = 1001,
-                    model=None, tol: float = 1e-13) -> Trajectory:
+                    model=None, tol: float = 1e-13, compiled: bool = False) -> Trajectory:
     """Integrate from ``y0 = [q, q̇]`` over ``t_span`` with ``steps = round((t1 − t0)/step)`` fixed steps,
-    recording about ``n_points`` states (every ``stride``-th step).
+    recording about ``n_points`` states (every ``stride``-th step, and the last).
+
+    ``compiled``: run the steps in the compiled loop (numba; :mod:`lagrange.integrate._geometric_loops`,
+    the same schemes transcribed) instead of Python.
 
     Raises
     ------
@@ -45,15 +74,28 @@ def integrate_fixed(system, t_span, y0, params, *, method: str, step: float, n_p
     h = (t1 - t0) / steps
     hm = hamiltonian_model(system, params)
     scheme = GEOMETRIC[method](hm, tol=tol)
-    n = hm.n
-    z = np.concatenate([y0[:n], hm.to_momenta(t0, y0[:n], y0[n:])])
     stride = max(1, steps // max(1, n_points - 1))
-    ts, zs = [t0], [z.copy()]
-    iters = 0
     if model is None:
         model = system.compile(params)
     label = f"{method} (fixed step h={h:.3g}, order {scheme.order}" + (", symplectic" if scheme.symplectic else "") \
-        + (", energy-conserving" if scheme.energy_conserving else "") + ")"
+        + (", energy-conserving" if scheme.energy_conserving else "") + ("; compiled loop" if compiled else "") + ")"
+    where = (t0, y0, model, label, steps)
+    if compiled:
+        T, Y, iters = _run_compiled(hm, scheme, t0, h, steps, stride, y0, where)
+    else:
+        T, Y, iters = _run_python(hm, scheme, t0, h, steps, stride, y0, where)
+    return Trajectory(t=T, y=Y, model=model, method=label, success=True,
+                      message=f"{steps} steps, {iters} Newton iterations", nfev=steps, work=None,
+                      initial=(t0, np.asarray(y0, dtype=float).copy()))
+
+
+def _run_python(hm, scheme, t0, h, steps, stride, y0, where) -> tuple[np.ndarray, np.ndarray, int]:
+    """The step loop in Python: ``(T, Y = [q, q̇] rows, Newton iterations)``."""
+    n = hm.n
+    z = np.concatenate([y0[:n], hm.to_momenta(t0, y0[:n], y0[n:])])
+    ts, zs = [t0], [z.copy()]
+    iters = 0
+    method = scheme.name
     for k in range(steps):
         tk = t0 + k * h
         try:
@@ -63,16 +105,68 @@ def integrate_fixed(system, t_span, y0, params, *, method: str, step: float, n_p
                                        "or a step too large: reduce the step")
         except (IntegrationError, ZeroDivisionError, OverflowError, ValueError, FloatingPointError,
                 np.linalg.LinAlgError) as exc:
-            raise _step_fault(exc, k, steps, tk, z, (ts, zs), hm, model, label, t0, y0) from None
+            if ts[-1] != tk:
+                ts.append(tk)
+                zs.append(z.copy())
+            cause = str(exc) if isinstance(exc, IntegrationError) else f"{type(exc).__name__}: {exc}"
+            raise _step_fault(cause, k, tk, np.array(ts), _velocities(hm, ts, zs), where) from None
         z = z_new
         iters += it
         if (k + 1) % stride == 0 or k + 1 == steps:
             ts.append(t0 + (k + 1) * h)
             zs.append(z.copy())
-    Y = _velocities(hm, ts, zs)
-    return Trajectory(t=np.array(ts), y=Y, model=model, method=label, success=True,
-                      message=f"{steps} steps, {iters} Newton iterations", nfev=steps, work=None,
-                      initial=(t0, np.asarray(y0, dtype=float).copy()))
+    return np.array(ts), _velocities(hm, ts, zs), iters
+
+
+def _compiled_module(hm):
+    """The numba module of the model's generated Hamiltonian pieces (compiled once, cached on disk)."""
+    from ..codegen.numba_backend import load_cached
+    from .hamiltonian_model import generated_source
+
+    return load_cached("ham", generated_source(hm.equations, len(hm.params), compiled=True),
+                       "the generated Hamiltonian pieces")
+
+
+def _run_compiled(hm, scheme, t0, h, steps, stride, y0, where) -> tuple[np.ndarray, np.ndarray, int]:
+    """The compiled step loop: ``(T, Y = [q, q̇] rows, Newton iterations)``; a failed step raises as in
+    :func:`_run_python`, with the same wording."""
+    from .compiled import first_class, kernel
+
+    k = kernel("_geometric_loops.py", "geoloops", f"method={scheme.name!r} with loop='compiled'")
+    mod = _compiled_module(hm)
+    mass, lag, second = (first_class(mod.mass, k.MASS), first_class(mod.lagrangian, k.LAGRANGIAN),
+                         first_class(mod.second, k.SECOND))
+    n = hm.n
+    p = np.ascontiguousarray(hm.params, dtype=float)
+    q0, v0 = np.ascontiguousarray(y0[:n], dtype=float), np.ascontiguousarray(y0[n:], dtype=float)
+    z0 = np.concatenate([q0, k.momenta(mass, float(t0), q0, v0, p)])
+    if isinstance(scheme, _Gauss):
+        code, (A, b, c) = k.GAUSS, TABLEAUX[scheme.stages]
+    else:
+        code, A, b, c = (k.VERLET if isinstance(scheme, StormerVerlet) else k.DG), np.zeros((0, 0)), np.zeros(0), \
+            np.zeros(0)
+    status, kf, rnorm, its, total, n_out, T, Y, z = k.run(
+        code, mass, lag, second, np.ascontiguousarray(A), np.ascontiguousarray(b), np.ascontiguousarray(c),
+        float(t0), float(h), int(steps), int(stride), z0, p, float(scheme.tol), int(scheme.max_iter))
+    T, Y = np.array(T[:n_out]), np.array(Y[:n_out])
+    if status == k.OK:
+        return T, Y, int(total)
+    tk = t0 + kf * h
+    where_ = "(stage equations)" if code == k.GAUSS else "(discrete gradient)"
+    head = f"{scheme.name} step from t={tk:.9g} with h={h:.3g}: "
+    cause = {
+        k.NEWTON_MAX_ITER: f"{head}Newton's method did not converge in {scheme.max_iter} iterations {where_} "
+                           f"(last residual {rnorm:.3g}, tolerance {scheme.tol:.1g} relative); reduce the step",
+        k.NEWTON_DIVERGED: f"{head}Newton's method diverged {where_}: non-finite residual at iteration {its}; "
+                           "reduce the step",
+        k.SINGULAR_JACOBIAN: f"{head}Newton's method failed {where_}: singular Jacobian at iteration {its} "
+                             f"(residual {rnorm:.3g}); reduce the step",
+        k.SINGULAR_MASS: f"{head}the mass matrix is not positive definite at a point of the step: a singular "
+                         "configuration (a coordinate reaching a singular value), or a step too large",
+        k.NON_FINITE: f"{scheme.name}: non-finite state after the step from t={tk:.9g}; a blow-up, or a step too "
+                      "large: reduce the step",
+    }[status]
+    raise _step_fault(cause, kf, tk, T, Y, where)
 
 
 def _velocities(hm, ts, zs) -> np.ndarray:
@@ -81,20 +175,17 @@ def _velocities(hm, ts, zs) -> np.ndarray:
     return np.array([np.concatenate([zi[:n], hm.grad(ti, zi)[n:]]) for ti, zi in zip(ts, zs)]).reshape(len(ts), 2 * n)
 
 
-def _step_fault(exc, k, steps, tk, z, recorded, hm, model, label, t0, y0) -> IntegrationError:
-    """The failed step ``k`` as an IntegrationError: where, why, and the trajectory up to the state before it."""
-    ts, zs = list(recorded[0]), list(recorded[1])
-    if ts[-1] != tk:
-        ts.append(tk)
-        zs.append(z.copy())
-    Y = _velocities(hm, ts, zs)
+def _step_fault(cause: str, k: int, tk: float, T: np.ndarray, Y: np.ndarray, where) -> IntegrationError:
+    """The failed step ``k`` (from ``tk``) as an IntegrationError: where, why, and the trajectory ``T, Y`` up
+    to the state before it (its last row)."""
+    t0, y0, model, label, steps = where
     names = [coordinate_name(c) for c in model.equations.coordinates]
     n = len(names)
     state = ", ".join([f"{nm}={Y[-1, i]:.6g}" for i, nm in enumerate(names)]
                       + [f"{nm}{VELOCITY_SUFFIX}={Y[-1, n + i]:.6g}" for i, nm in enumerate(names)])
-    cause = str(exc) if isinstance(exc, IntegrationError) else f"{type(exc).__name__}: {exc}"
-    partial = Trajectory(t=np.array(ts), y=Y, model=model, method=f"{label} (stopped early)", success=False,
-                         message=cause, nfev=k, work=None, initial=(t0, np.asarray(y0, dtype=float).copy()))
+    partial = Trajectory(t=np.asarray(T, dtype=float), y=Y, model=model, method=f"{label} (stopped early)",
+                         success=False, message=cause, nfev=k, work=None,
+                         initial=(t0, np.asarray(y0, dtype=float).copy()))
     return IntegrationError(
         f"step {k + 1} of {steps} failed at t={tk:.9g} ({state}): {cause}. The trajectory up to "
         f"t={tk:.9g} is in the error's `partial` attribute.",

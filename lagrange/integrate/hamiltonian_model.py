@@ -3,23 +3,28 @@ r"""Numeric Hamiltonian of a system, for the structure-preserving integrators.
 In canonical variables ``z = (q, p)`` the flow is ``ż = 𝕁 ∇H(z)`` with ``𝕁 = [[0, I], [−I, 0]]``.
 Runge–Kutta methods that conserve quadratic invariants (Gauss–Legendre collocation, implicit midpoint)
 are symplectic *in these variables* (not in (q, q̇)), so the fixed-step geometric integrators work on
-(q, p) and convert back with ``q̇ = ∂H/∂p``. Built from the derived equations (no symbolic Legendre transform):
-M, b, L and ∂L/∂q are generated once (CSE'd lambdify) with parameters bound; M⁻¹ is applied numerically.
+(q, p) and convert back with ``q̇ = ∂H/∂p``. Built from the derived equations (no symbolic Legendre
+transform): M, b, L, ∂L/∂q and the second derivatives of L are generated once
+(:mod:`lagrange.codegen.hamiltonian_source`, kept in the derivation cache) and M⁻¹ is applied numerically.
 """
 
 from __future__ import annotations
 
+import weakref
 from collections.abc import Mapping
 from dataclasses import dataclass
 
 import numpy as np
 import sympy as sp
 
+from ..codegen.hamiltonian_source import check_hamiltonian, hamiltonian_source
 from ..codegen.numeric import bind_parameters
 from ..conventions import t
-from ..errors import LagrangeError
 
-__all__ = ["HamiltonianModel", "hamiltonian_model"]
+__all__ = ["HamiltonianModel", "hamiltonian_model", "generated_source"]
+
+_SOURCES: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
+_MODELS: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()  # Equations → {parameter values: model}
 
 
 @dataclass(frozen=True)
@@ -27,10 +32,12 @@ class HamiltonianModel:
     n: int
     H: object  # H(t, z) -> float
     grad: object  # ∇H(t, z) -> (2n,)
-    hess: object  # ∇²H(t, z) -> (2n, 2n)
+    hess: object  # ∇²H(t, z) -> (2n, 2n), from the generated second derivatives of L
     to_momenta: object  # (t, q, qd) -> p
     autonomous: bool
     separable: bool  # H = ½ pᵀ M⁻¹ p + V(q) with constant M
+    equations: object = None  # the Equations it was built from
+    params: np.ndarray | None = None  # parameter values, in the order of equations.numeric_parameters
 
     def field(self, t_, z) -> np.ndarray:
         """𝕁∇H."""
@@ -44,70 +51,92 @@ class HamiltonianModel:
         return np.vstack([Hz[n:, :], -Hz[:n, :]])
 
 
+def generated_source(eqs, n_params: int, *, compiled: bool) -> str:
+    """:func:`~lagrange.codegen.hamiltonian_source.hamiltonian_source` of ``eqs``, from the derivation cache
+    (and memoized per Equations in this process)."""
+    from ..codegen.derivation_cache import cached_source
+
+    key = (n_params, compiled)
+    memo = _SOURCES.setdefault(eqs, {})
+    if key not in memo:
+        options = f"hamiltonian pieces; n_params {n_params}; {'numba' if compiled else 'python'}"
+        memo[key] = cached_source(eqs, options, lambda: hamiltonian_source(eqs, n_params, compiled=compiled))
+    return memo[key]
+
+
 def hamiltonian_model(system, params: Mapping) -> HamiltonianModel:
     r"""Compile H for ``system`` with ``params`` bound. Only conservative, unconstrained systems qualify
     (forces outside V break the Hamiltonian structure the geometric methods preserve).
 
-    M⁻¹ is never formed symbolically (it explodes beyond two or three degrees of freedom). With
-    ``T = ½ q̇ᵀM(q,t)q̇ + bᵀq̇ + T₀`` and ``L = T − V`` the generated pieces are M, b, L and ∂L/∂q, and
+    With ``T = ½ q̇ᵀM(q,t)q̇ + bᵀq̇ + T₀`` and ``L = T − V``:
 
     .. math:: \dot q = M^{-1}(p - b),\quad H = p\cdot\dot q - L,\quad
               \partial H/\partial p = \dot q,\quad \partial H/\partial q = -\partial L/\partial q\big|_{\dot q}
 
-    — the exact gradient of H (so the discrete gradient still conserves H to the Newton tolerance). The
-    Hessian, used only as Newton's matrix, is the central difference of that gradient.
+    — the exact gradient of H (so the discrete gradient conserves H to the Newton tolerance) — and the
+    exact Hessian (Newton's matrix) from the generated second derivatives of L
+    (:mod:`lagrange.codegen.hamiltonian_source` gives the formula). Built once per equations and parameter
+    values in a process.
     """
-    eqs = system.derived
-    if eqs.m:
-        raise LagrangeError("the geometric integrators need an unconstrained system (eliminate the constraints)")
-    if any(sp.sympify(Q) != 0 for Q in eqs.nonconservative):
-        raise LagrangeError("the geometric integrators need a conservative system: forces, P or rayleigh present; "
-                            "use a scipy method")
-    values = dict(zip(eqs.parameters, bind_parameters(eqs, params)))
+    eqs = system.derived if hasattr(system, "derived") else system
+    check_hamiltonian(eqs)
+    pvals = bind_parameters(eqs, params)
+    memo = _MODELS.setdefault(eqs, {})
+    key = tuple(pvals.tolist())
+    if key not in memo:
+        memo[key] = _build(eqs, pvals)
+    return memo[key]
+
+
+def _build(eqs, pvals: np.ndarray) -> HamiltonianModel:
     n = eqs.n
+    namespace: dict = {}
+    exec(compile(generated_source(eqs, len(pvals), compiled=False), "<lagrange hamiltonian>", "exec"), namespace)
+    mass, lagrangian, second = namespace["mass"], namespace["lagrangian"], namespace["second"]
+    pc = tuple(float(v) for v in pvals)
+
+    def mass_b(t_, qq):
+        M, b = np.empty((n, n)), np.empty(n)
+        mass(t_, qq, pc, M, b)
+        return M, b
+
+    def state(t_, zz):
+        """(q as floats, M, q̇) at (t, z)."""
+        qq = [float(x) for x in zz[:n]]
+        M, b = mass_b(t_, qq)
+        return qq, M, np.linalg.solve(M, np.asarray(zz[n:], dtype=float) - b)
+
+    def H(t_, zz):
+        qq, _, v = state(t_, zz)
+        return float(np.dot(zz[n:], v) - lagrangian(t_, qq, v.tolist(), pc, np.empty(n)))
+
+    def grad(t_, zz):
+        qq, _, v = state(t_, zz)
+        Lq = np.empty(n)
+        lagrangian(t_, qq, v.tolist(), pc, Lq)
+        return np.concatenate([-Lq, v])
+
+    def hess(t_, zz):
+        qq, M, v = state(t_, zz)
+        Lqq, Lqv = np.empty((n, n)), np.empty((n, n))
+        second(t_, qq, v.tolist(), pc, Lqq, Lqv)
+        Minv = np.linalg.inv(M)
+        W = Minv @ Lqv.T  # −∂q̇/∂q
+        return np.block([[-Lqq + Lqv @ W, -W.T], [-W, Minv]])
+
+    def to_momenta(t_, qq, vv):
+        M, b = mass_b(t_, [float(x) for x in qq])
+        return M @ np.asarray(vv, dtype=float) + b
+
+    values = dict(zip(eqs.numeric_parameters, pvals))
     q, qd = list(eqs.q), list(eqs.qd)
     T = sp.sympify(eqs.kinetic).subs(values)
     V = sp.sympify(eqs.potential).subs(values)
     M = sp.Matrix(eqs.mass_matrix).subs(values)
-    if any(e.free_symbols & set(qd) for e in M):
-        raise LagrangeError("the geometric integrators need T quadratic in the velocities (the mass matrix "
-                            "depends on velocities here)")
     zero = {v: 0 for v in qd}
-    b = [sp.diff(T, v).subs(zero) for v in qd]
-    L = T - V
-    args = (t, q, qd)
-    fM = sp.lambdify((t, q), M, "numpy", cse=True)
-    fb = sp.lambdify((t, q), b, "numpy", cse=True)
-    fL = sp.lambdify(args, L, "numpy", cse=True)
-    fLq = sp.lambdify(args, [sp.diff(L, v) for v in q], "numpy", cse=True)
-
-    def velocities(t_, zz):
-        qq = list(zz[:n])
-        rhs = np.asarray(zz[n:], dtype=float) - np.asarray(fb(t_, qq), dtype=float).reshape(n)
-        return np.linalg.solve(np.asarray(fM(t_, qq), dtype=float).reshape(n, n), rhs)
-
-    def H(t_, zz):
-        v = velocities(t_, zz)
-        return float(np.dot(zz[n:], v) - fL(t_, list(zz[:n]), list(v)))
-
-    def grad(t_, zz):
-        v = velocities(t_, zz)
-        return np.concatenate([-np.asarray(fLq(t_, list(zz[:n]), list(v)), dtype=float).reshape(n), v])
-
-    def hess(t_, zz):
-        zz = np.asarray(zz, dtype=float)
-        out = np.empty((2 * n, 2 * n))
-        for j in range(2 * n):
-            e = np.zeros(2 * n)
-            e[j] = 1e-6 * (1.0 + abs(zz[j]))
-            out[:, j] = (grad(t_, zz + e) - grad(t_, zz - e)) / (2 * e[j])
-        return 0.5 * (out + out.T)
-
-    def to_momenta(t_, qq, vv):
-        Mq = np.asarray(fM(t_, list(qq)), dtype=float).reshape(n, n)
-        return Mq @ np.asarray(vv, dtype=float) + np.asarray(fb(t_, list(qq)), dtype=float).reshape(n)
-
     Mconst = all(not (e.free_symbols & (set(q) | {t})) for e in M)
-    separable = Mconst and all(sp.sympify(e) == 0 for e in b) and not ((V - T.subs(zero)).free_symbols & {t})
+    separable = Mconst and all(sp.diff(T, v).subs(zero) == 0 for v in qd) and not (
+        (V - T.subs(zero)).free_symbols & {t})
     return HamiltonianModel(n=n, H=H, grad=grad, hess=hess, to_momenta=to_momenta,
-                            autonomous=t not in (T.free_symbols | V.free_symbols), separable=bool(separable))
+                            autonomous=t not in (T.free_symbols | V.free_symbols), separable=bool(separable),
+                            equations=eqs, params=pvals)

@@ -416,7 +416,10 @@ def simulate(
         the compiled numba loop (no Python per step; implies ``backend="numba"``) or ``solve_ivp``;
         ``"auto"`` uses the compiled loop for numba models without events, constraints or friction
         switches. See :mod:`lagrange.integrate.compiled`; the ``method`` label of the result says which
-        loop ran (``"DOP853 (compiled loop)"``) and, for numba models run by scipy, why.
+        loop ran (``"DOP853 (compiled loop)"``) and, for numba models run by scipy, why. For the
+        fixed-step geometric methods ``"compiled"`` runs them in numba
+        (:mod:`lagrange.integrate._geometric_loops`, needs numba, any backend), ``"scipy"`` in Python and
+        ``"auto"`` compiled when the backend is numba.
 
     Returns
     -------
@@ -459,14 +462,15 @@ def simulate(
     why = ""
     if method == "auto":
         method, why = choose_method(eqs, params, (t0, t1), initial_state(eqs.coordinates, initial), rtol=rtol)
-    from .fixed import GEOMETRIC, integrate_fixed
+    from .fixed import GEOMETRIC, fixed_loop, integrate_fixed
 
     if method in GEOMETRIC:
         if t_eval is not None or events:
             raise TypeError(f"{method} is a fixed-step integrator: it takes step= and n_points=, not t_eval/events")
+        compiled = fixed_loop(loop, backend=backend, model=model)
         y0 = initial_state(eqs.coordinates, initial)
         return integrate_fixed(system, (t0, t1), y0, params, method=method, step=step, n_points=n_points,
-                               model=model)
+                               model=model, compiled=compiled)
     if method == "taylor":
         return _simulate_taylor(system, eqs, (t0, t1), initial, params, model=model, backend=backend, t_eval=t_eval,
                                 n_points=n_points, rtol=rtol, atol=atol, max_step=max_step, events=events,

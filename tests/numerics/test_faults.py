@@ -166,29 +166,31 @@ def test_fault_on_the_friction_segment_path():
     assert np.allclose(p[x.diff(t)], exact, atol=1e-6)
 
 
+@pytest.mark.parametrize("loop", ["scipy", "compiled"])
 @pytest.mark.parametrize(("method", "h", "fail_t"), [("midpoint", 5.0, 10.0), ("gl4", 5.0, 5.0), ("dg", 2.0, 4.0)])
-def test_newton_failure_with_a_huge_step(method, h, fail_t):
+def test_newton_failure_with_a_huge_step(method, h, fail_t, loop):
     """A pendulum swinging near the top with a step of several periods: Newton fails; the error names the
     step, its time, the residual, and the partial trajectory equals the same run stopped before it."""
     x = lg.coordinates("x")
     s = lg.System([x], T=x.diff(t) ** 2 / 2, V=-sp.cos(x))
     ic = {x: 3.0, x.diff(t): 0.0}
     with pytest.raises(IntegrationError) as info:
-        s.simulate(40.0, ic, {}, method=method, step=h)
+        s.simulate(40.0, ic, {}, method=method, step=h, loop=loop)
     exc = info.value
     p = _check_partial(exc, ("x",))
     msg = str(exc)
     assert "Newton" in msg and "residual" in msg and f"step {round(fail_t / h) + 1} of" in msg
     assert exc.t == fail_t and p.t[-1] == fail_t
-    ref = s.simulate(fail_t, ic, {}, method=method, step=h)
+    ref = s.simulate(fail_t, ic, {}, method=method, step=h, loop=loop)
     assert np.allclose(p.y[-1], ref.y[-1], rtol=1e-12, atol=1e-12)
 
 
+@pytest.mark.parametrize("loop", ["scipy", "compiled"])
 @pytest.mark.parametrize("method", ["midpoint", "gl4", "gl6", "dg"])
-def test_blowup_in_a_geometric_method(method):
+def test_blowup_in_a_geometric_method(method, loop):
     s, x = _blowup_system()
     with pytest.raises(IntegrationError) as info:
-        s.simulate(5.0, {x: 1.0, x.diff(t): C}, {}, method=method, step=0.01)
+        s.simulate(5.0, {x: 1.0, x.diff(t): C}, {}, method=method, step=0.01, loop=loop)
     exc = info.value
     p = _check_partial(exc, ("x",))
     assert 2.3 < exc.t < T_BLOWUP and p.t[-1] == exc.t
@@ -198,8 +200,7 @@ def test_blowup_in_a_geometric_method(method):
 
 
 def _n_cases(fn) -> int:
-    marks = [m for m in getattr(fn, "pytestmark", []) if m.name == "parametrize"]
-    return len(marks[0].args[1]) if marks else 1
+    return math.prod(len(m.args[1]) for m in getattr(fn, "pytestmark", []) if m.name == "parametrize")
 
 
 FAULT_TESTS = [test_finite_time_blowup, test_math_domain_error_mid_run, test_nan_from_numba_backend,
@@ -211,4 +212,4 @@ N_FAULTS = sum(_n_cases(f) for f in FAULT_TESTS)
 
 
 def test_fault_count():
-    assert N_FAULTS == 6 + 7 + 2 + 1 + 1 + 1 + 1 + 3 + 4
+    assert N_FAULTS == 6 + 7 + 2 + 1 + 1 + 1 + 1 + 3 * 2 + 4 * 2
