@@ -24,6 +24,10 @@ from .stormer_verlet import StormerVerlet
 
 __all__ = ["GEOMETRIC", "integrate_fixed", "fixed_loop"]
 
+#: why a step failed when M is not positive definite at one of its points (both loops)
+SINGULAR_MASS = ("the mass matrix is singular (or not positive definite) at a point of the step: a singular "
+                 "configuration (a coordinate reaching a singular value, a vanishing inertia), or a step too large")
+
 #: name → scheme
 GEOMETRIC = {cls.name: cls for cls in (ImplicitMidpoint, GaussLegendre4, GaussLegendre6, StormerVerlet,
                                        DiscreteGradient)}
@@ -108,7 +112,10 @@ def _run_python(hm, scheme, t0, h, steps, stride, y0, where) -> tuple[np.ndarray
             if ts[-1] != tk:
                 ts.append(tk)
                 zs.append(z.copy())
-            cause = str(exc) if isinstance(exc, IntegrationError) else f"{type(exc).__name__}: {exc}"
+            if isinstance(exc, np.linalg.LinAlgError):  # M singular at a stage point
+                cause = f"{method} step from t={tk:.9g} with h={h:.3g}: {SINGULAR_MASS}"
+            else:
+                cause = str(exc) if isinstance(exc, IntegrationError) else f"{type(exc).__name__}: {exc}"
             raise _step_fault(cause, k, tk, np.array(ts), _velocities(hm, ts, zs), where) from None
         z = z_new
         iters += it
@@ -161,8 +168,7 @@ def _run_compiled(hm, scheme, t0, h, steps, stride, y0, where) -> tuple[np.ndarr
                            "reduce the step",
         k.SINGULAR_JACOBIAN: f"{head}Newton's method failed {where_}: singular Jacobian at iteration {its} "
                              f"(residual {rnorm:.3g}); reduce the step",
-        k.SINGULAR_MASS: f"{head}the mass matrix is not positive definite at a point of the step: a singular "
-                         "configuration (a coordinate reaching a singular value), or a step too large",
+        k.SINGULAR_MASS: f"{head}{SINGULAR_MASS}",
         k.NON_FINITE: f"{scheme.name}: non-finite state after the step from t={tk:.9g}; a blow-up, or a step too "
                       "large: reduce the step",
     }[status]
@@ -170,23 +176,36 @@ def _run_compiled(hm, scheme, t0, h, steps, stride, y0, where) -> tuple[np.ndarr
 
 
 def _velocities(hm, ts, zs) -> np.ndarray:
-    """``[q, q̇]`` rows from canonical ``(q, p)``: ``q̇ = ∂H/∂p``."""
+    """``[q, q̇]`` rows from canonical ``(q, p)``: ``q̇ = ∂H/∂p`` (nan where M is singular, as in the
+    compiled loop: the state before a failed step may sit on the singularity)."""
     n = hm.n
-    return np.array([np.concatenate([zi[:n], hm.grad(ti, zi)[n:]]) for ti, zi in zip(ts, zs)]).reshape(len(ts), 2 * n)
+    rows = []
+    for ti, zi in zip(ts, zs):
+        try:
+            v = hm.grad(ti, zi)[n:]
+        except (np.linalg.LinAlgError, ValueError, ZeroDivisionError, OverflowError):
+            v = np.full(n, np.nan)
+        rows.append(np.concatenate([zi[:n], v]))
+    return np.array(rows).reshape(len(ts), 2 * n)
 
 
 def _step_fault(cause: str, k: int, tk: float, T: np.ndarray, Y: np.ndarray, where) -> IntegrationError:
     """The failed step ``k`` (from ``tk``) as an IntegrationError: where, why, and the trajectory ``T, Y`` up
-    to the state before it (its last row)."""
+    to the state before it (its last row). A last row whose velocity is undefined (M singular there: q̇ =
+    M⁻¹(p − b) does not exist) is named in the message but left out of ``partial``, which stays finite."""
     t0, y0, model, label, steps = where
     names = [coordinate_name(c) for c in model.equations.coordinates]
     n = len(names)
     state = ", ".join([f"{nm}={Y[-1, i]:.6g}" for i, nm in enumerate(names)]
                       + [f"{nm}{VELOCITY_SUFFIX}={Y[-1, n + i]:.6g}" for i, nm in enumerate(names)])
-    partial = Trajectory(t=np.asarray(T, dtype=float), y=Y, model=model, method=f"{label} (stopped early)",
-                         success=False, message=cause, nfev=k, work=None,
+    keep = len(T)
+    while keep > 1 and not np.all(np.isfinite(Y[keep - 1])):
+        keep -= 1
+    partial = Trajectory(t=np.asarray(T[:keep], dtype=float), y=Y[:keep], model=model,
+                         method=f"{label} (stopped early)", success=False, message=cause, nfev=k, work=None,
                          initial=(t0, np.asarray(y0, dtype=float).copy()))
+    undefined = "" if keep == len(T) else f" (the velocity is undefined at t={tk:.9g})"
     return IntegrationError(
         f"step {k + 1} of {steps} failed at t={tk:.9g} ({state}): {cause}. The trajectory up to "
-        f"t={tk:.9g} is in the error's `partial` attribute.",
+        f"t={T[keep - 1]:.9g}{undefined} is in the error's `partial` attribute.",
         t=tk, state=dict(zip(model.equations.coordinates, Y[-1, :n])), partial=partial)

@@ -199,6 +199,30 @@ def test_blowup_in_a_geometric_method(method, loop):
     assert np.allclose(p[x][early], _blowup_exact(p.t[early]), rtol=rtol)
 
 
+@pytest.mark.parametrize("loop", ["scipy", "compiled"])
+@pytest.mark.parametrize("method", ["midpoint", "gl4"])
+def test_inertia_vanishes_in_a_geometric_method(method, loop):
+    """T = (1 − t) ẏ²/2, V = y²/2: the mass matrix vanishes at t = 1, where y diverges logarithmically —
+    y = c J₀(2√s) + d Y₀(2√s) with s = 1 − t (Bessel's equation after s y'' + y' + y = 0). Both step loops stop
+    at the step from t = 1 and name the singular mass matrix; the partial trajectory follows the closed form
+    and ends at the last state whose velocity exists."""
+    from scipy.special import j0, j1, y0, y1
+
+    y = lg.coordinates("y")
+    s = lg.System([y], T=(1 - t) * y.diff(t) ** 2 / 2, V=y**2 / 2)
+    with pytest.raises(IntegrationError) as info:
+        s.simulate(2.0, {y: 1.0, y.diff(t): 0.0}, {}, method=method, step=0.01, loop=loop)
+    exc = info.value
+    p = _check_partial(exc, ("y",))
+    assert exc.t == pytest.approx(1.0, abs=1e-12) and "mass matrix is singular" in str(exc)
+    assert p.t[-1] == pytest.approx(0.99, abs=1e-12)
+    c, d = np.linalg.solve([[j0(2.0), y0(2.0)], [j1(2.0), y1(2.0)]], [1.0, 0.0])  # y(0) = 1, ẏ(0) = 0
+    early = p.t <= 0.8
+    root = 2 * np.sqrt(1 - p.t[early])
+    exact = c * j0(root) + d * y0(root)
+    assert np.allclose(p[y][early], exact, rtol=1e-6 if method == "gl4" else 1e-3, atol=1e-9)
+
+
 def _n_cases(fn) -> int:
     return math.prod(len(m.args[1]) for m in getattr(fn, "pytestmark", []) if m.name == "parametrize")
 
@@ -206,10 +230,11 @@ def _n_cases(fn) -> int:
 FAULT_TESTS = [test_finite_time_blowup, test_math_domain_error_mid_run, test_nan_from_numba_backend,
                test_mass_matrix_becomes_singular_mid_run, test_coordinate_singularity,
                test_fault_on_the_projection_path, test_fault_on_the_friction_segment_path,
-               test_newton_failure_with_a_huge_step, test_blowup_in_a_geometric_method]
+               test_newton_failure_with_a_huge_step, test_blowup_in_a_geometric_method,
+               test_inertia_vanishes_in_a_geometric_method]
 #: faults injected by this module (one per parametrized case)
 N_FAULTS = sum(_n_cases(f) for f in FAULT_TESTS)
 
 
 def test_fault_count():
-    assert N_FAULTS == 6 + 7 + 2 + 1 + 1 + 1 + 1 + 3 * 2 + 4 * 2
+    assert N_FAULTS == 6 + 7 + 2 + 1 + 1 + 1 + 1 + 3 * 2 + 4 * 2 + 2 * 2
