@@ -27,7 +27,8 @@ import numpy as np
 from ..errors import IntegrationError, LagrangeError
 from .hamiltonian_model import HamiltonianModel
 
-__all__ = ["Integrator", "newton", "NewtonFailure"]
+__all__ = ["Integrator", "newton", "NewtonFailure", "not_converged", "diverged", "singular_jacobian", "step_prefix",
+           "non_finite_state"]
 
 
 class NewtonFailure(IntegrationError):
@@ -38,6 +39,30 @@ class NewtonFailure(IntegrationError):
         self.residual = residual
         self.iterations = iterations
         super().__init__(message, **kwargs)
+
+
+def not_converged(max_iter: int, where: str, residual: float, tol: float) -> str:
+    """Why Newton failed (wording shared by the Python and the compiled step loops)."""
+    return (f"Newton's method did not converge in {max_iter} iterations {where} (last residual {residual:.3g}, "
+            f"tolerance {tol:.1g} relative); reduce the step")
+
+
+def diverged(where: str, iteration: int) -> str:
+    return f"Newton's method diverged {where}: non-finite residual at iteration {iteration}; reduce the step"
+
+
+def singular_jacobian(where: str, iteration: int, residual: float) -> str:
+    return (f"Newton's method failed {where}: singular Jacobian at iteration {iteration} (residual {residual:.3g}); "
+            "reduce the step")
+
+
+def step_prefix(name: str, t: float, h: float) -> str:
+    """How a failed step's message starts: the scheme, the step's time and size."""
+    return f"{name} step from t={t:.9g} with h={h:.3g}: "
+
+
+def non_finite_state(name: str, t: float) -> str:
+    return f"{name}: non-finite state after the step from t={t:.9g}; a blow-up, or a step too large: reduce the step"
 
 
 def newton(residual, jacobian, x0, *, tol: float, max_iter: int, where: str):
@@ -55,21 +80,17 @@ def newton(residual, jacobian, x0, *, tol: float, max_iter: int, where: str):
         rnorm = float(np.max(np.abs(r)))
         scale = 1.0 + float(np.max(np.abs(x)))
         if not (np.isfinite(rnorm) and np.isfinite(scale)):
-            raise NewtonFailure(f"Newton's method diverged {where}: non-finite residual at iteration {it}; "
-                                "reduce the step", residual=float("inf"), iterations=it)
+            raise NewtonFailure(diverged(where, it), residual=float("inf"), iterations=it)
         if rnorm <= tol * scale:
             return x, it - 1
         try:
             dx = np.linalg.solve(jacobian(x), r)
         except np.linalg.LinAlgError:
-            raise NewtonFailure(f"Newton's method failed {where}: singular Jacobian at iteration {it} "
-                                f"(residual {rnorm:.3g}); reduce the step", residual=rnorm, iterations=it) from None
+            raise NewtonFailure(singular_jacobian(where, it, rnorm), residual=rnorm, iterations=it) from None
         x -= dx
         if float(np.max(np.abs(dx))) <= 4e-16 * scale:
             return x, it
-    raise NewtonFailure(f"Newton's method did not converge in {max_iter} iterations {where} (last residual "
-                        f"{rnorm:.3g}, tolerance {tol:.1g} relative); reduce the step", residual=rnorm,
-                        iterations=max_iter)
+    raise NewtonFailure(not_converged(max_iter, where, rnorm, tol), residual=rnorm, iterations=max_iter)
 
 
 class Integrator:
@@ -99,10 +120,10 @@ class Integrator:
         try:
             return self._step_impl(t, z, h)
         except NewtonFailure as exc:
-            raise NewtonFailure(f"{self.name} step from t={t:.9g} with h={h:.3g}: {exc}", residual=exc.residual,
+            raise NewtonFailure(f"{step_prefix(self.name, t, h)}{exc}", residual=exc.residual,
                                 iterations=exc.iterations, t=t) from None
         except IntegrationError as exc:
-            raise IntegrationError(f"{self.name} step from t={t:.9g} with h={h:.3g}: {exc}", t=t) from None
+            raise IntegrationError(f"{step_prefix(self.name, t, h)}{exc}", t=t) from None
 
     def _step_impl(self, t: float, z: np.ndarray, h: float) -> tuple[np.ndarray, int]:  # pragma: no cover
         raise NotImplementedError

@@ -17,6 +17,7 @@ from ..conventions import VELOCITY_SUFFIX
 from ..errors import BackendError, IntegrationError
 from ..model.coordinates import coordinate_name
 from ..results.trajectory import Trajectory
+from .base import diverged, non_finite_state, not_converged, singular_jacobian, step_prefix
 from .discrete_gradient import DiscreteGradient
 from .gauss_legendre import TABLEAUX, GaussLegendre4, GaussLegendre6, ImplicitMidpoint, _Gauss
 from .hamiltonian_model import hamiltonian_model
@@ -105,15 +106,14 @@ def _run_python(hm, scheme, t0, h, steps, stride, y0, where) -> tuple[np.ndarray
         try:
             z_new, it = scheme.step(tk, z, h)
             if not np.all(np.isfinite(z_new)):
-                raise IntegrationError(f"{method}: non-finite state after the step from t={tk:.9g}; a blow-up, "
-                                       "or a step too large: reduce the step")
+                raise IntegrationError(non_finite_state(method, tk))
         except (IntegrationError, ZeroDivisionError, OverflowError, ValueError, FloatingPointError,
                 np.linalg.LinAlgError) as exc:
             if ts[-1] != tk:
                 ts.append(tk)
                 zs.append(z.copy())
             if isinstance(exc, np.linalg.LinAlgError):  # M singular at a stage point
-                cause = f"{method} step from t={tk:.9g} with h={h:.3g}: {SINGULAR_MASS}"
+                cause = step_prefix(method, tk, h) + SINGULAR_MASS
             else:
                 cause = str(exc) if isinstance(exc, IntegrationError) else f"{type(exc).__name__}: {exc}"
             raise _step_fault(cause, k, tk, np.array(ts), _velocities(hm, ts, zs), where) from None
@@ -160,17 +160,13 @@ def _run_compiled(hm, scheme, t0, h, steps, stride, y0, where) -> tuple[np.ndarr
         return T, Y, int(total)
     tk = t0 + kf * h
     where_ = "(stage equations)" if code == k.GAUSS else "(discrete gradient)"
-    head = f"{scheme.name} step from t={tk:.9g} with h={h:.3g}: "
+    head = step_prefix(scheme.name, tk, h)
     cause = {
-        k.NEWTON_MAX_ITER: f"{head}Newton's method did not converge in {scheme.max_iter} iterations {where_} "
-                           f"(last residual {rnorm:.3g}, tolerance {scheme.tol:.1g} relative); reduce the step",
-        k.NEWTON_DIVERGED: f"{head}Newton's method diverged {where_}: non-finite residual at iteration {its}; "
-                           "reduce the step",
-        k.SINGULAR_JACOBIAN: f"{head}Newton's method failed {where_}: singular Jacobian at iteration {its} "
-                             f"(residual {rnorm:.3g}); reduce the step",
-        k.SINGULAR_MASS: f"{head}{SINGULAR_MASS}",
-        k.NON_FINITE: f"{scheme.name}: non-finite state after the step from t={tk:.9g}; a blow-up, or a step too "
-                      "large: reduce the step",
+        k.NEWTON_MAX_ITER: head + not_converged(scheme.max_iter, where_, rnorm, scheme.tol),
+        k.NEWTON_DIVERGED: head + diverged(where_, its),
+        k.SINGULAR_JACOBIAN: head + singular_jacobian(where_, its, rnorm),
+        k.SINGULAR_MASS: head + SINGULAR_MASS,
+        k.NON_FINITE: non_finite_state(scheme.name, tk),
     }[status]
     raise _step_fault(cause, kf, tk, T, Y, where)
 

@@ -165,3 +165,21 @@ def test_fixed_loop_choice():
     assert "compiled loop" not in s.simulate(0.1, ic, p, method="gl4", step=0.01).method  # python backend
     with pytest.raises(TypeError, match="loop must be one of"):
         s.simulate(0.1, ic, p, method="gl4", step=0.01, loop="fortran")
+
+
+@pytest.mark.parametrize(("method", "h"), [("midpoint", 5.0), ("gl4", 5.0), ("dg", 2.0)])
+def test_failure_messages_agree_between_loops(method, h):
+    """A failed step reads the same from both loops (one wording, lagrange.integrate.base); only the last
+    residual's digits may differ by round-off."""
+    import re
+
+    from lagrange import IntegrationError
+
+    x = coordinates("x")
+    s = System([x], T=x.diff(t) ** 2 / 2, V=-sp.cos(x))
+    texts = []
+    for loop in LOOPS:
+        with pytest.raises(IntegrationError) as info:
+            s.simulate(40.0, {x: 3.0, x.diff(t): 0.0}, {}, method=method, step=h, loop=loop)
+        texts.append(re.sub(r"residual [-+.e\d]+", "residual R", str(info.value)))
+    assert texts[0] == texts[1] and "Newton" in texts[0]
