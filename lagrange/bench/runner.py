@@ -234,7 +234,7 @@ class _Runner:
         def make(h, t_end=p.t_end):
             def run():
                 sol = self.system.simulate((0.0, t_end), p.initial, p.params, method=s.method, step=h, n_points=2,
-                                           model=model, loop=s.loop or "scipy")
+                                           model=model, loop=s.loop)
                 return sol.y[-1:], None
             return run
         make(1e-3, 1e-3)()  # warm-up: builds H (and, compiled, loads or JIT-compiles the pieces and the kernel)

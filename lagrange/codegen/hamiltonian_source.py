@@ -13,8 +13,9 @@ gradient and its Hessian — the Newton matrix of the implicit steps — follow 
 M, b, L, ``L_q``, ``L_qq`` and ``L_{q q̇}`` and one Cholesky factorization of M per evaluation; M⁻¹ is never
 formed symbolically (it explodes beyond two or three degrees of freedom).
 
-The generated module has three functions (plain Python, or each compiled by numba for its signature below
-so the compiled loops of :mod:`lagrange.integrate._geometric_loops` take them as first-class functions)::
+The generated module has three functions (plain Python; :func:`compiled_source` adds the numba decorators,
+each function compiled eagerly for its signature below so the compiled loops of
+:mod:`lagrange.integrate._geometric_loops` take them as first-class functions)::
 
     mass(t, q, p, M, b) -> True                 # writes M (full, symmetric) and b
     lagrangian(t, q, v, p, Lq) -> L             # writes ∂L/∂q, returns L      (v = q̇)
@@ -32,14 +33,14 @@ from ..errors import LagrangeError
 from .cse import _cse, rename_map
 from .source import print_expr
 
-__all__ = ["hamiltonian_source", "check_hamiltonian", "MASS_SIGNATURE", "LAGRANGIAN_SIGNATURE",
+__all__ = ["hamiltonian_source", "compiled_source", "check_hamiltonian", "MASS_SIGNATURE", "LAGRANGIAN_SIGNATURE",
            "SECOND_SIGNATURE"]
 
 #: numba signatures of the generated functions (must equal those in ``lagrange.integrate._geometric_loops``)
 MASS_SIGNATURE = "boolean(float64, float64[::1], float64[::1], float64[:, ::1], float64[::1])"
 LAGRANGIAN_SIGNATURE = "float64(float64, float64[::1], float64[::1], float64[::1], float64[::1])"
 SECOND_SIGNATURE = "boolean(float64, float64[::1], float64[::1], float64[::1], float64[:, ::1], float64[:, ::1])"
-_OPTIONS = "cache=True, error_model='numpy'"
+_SIGNATURES = {"mass": MASS_SIGNATURE, "lagrangian": LAGRANGIAN_SIGNATURE, "second": SECOND_SIGNATURE}
 
 
 def check_hamiltonian(eqs: Equations) -> None:
@@ -68,26 +69,23 @@ def _pieces(eqs: Equations) -> dict:
         "b": [sp.diff(T, v).xreplace(zero) for v in qd],
         "L": L,
         "Lq": Lq,
-        "Lqq": [[sp.diff(Lq[i], q[j]) for j in range(len(q))] for i in range(len(q))],
+        "Lqq": {(i, j): sp.diff(Lq[i], q[j]) for i in range(len(q)) for j in range(i, len(q))},  # symmetric
         "Lqv": [[sp.diff(Lq[i], v) for v in qd] for i in range(len(q))],
     }
 
 
-def _function(name: str, arguments: str, reads: list[str], targets: list[tuple[str, object]], result: str,
-              signature: str | None) -> str:
+def _function(name: str, arguments: str, reads: list[str], targets: list[tuple[str, object]], result: str) -> str:
     """One straight-line function: unpack ``reads``, CSE the target expressions, write them, return."""
     exprs = [e for _, e in targets]
     repl, red = _cse(exprs) if exprs else ([], [])
     body = list(reads) + [f"{s} = {print_expr(e)}" for s, e in repl]
     body += [f"{target} = {print_expr(e)}" for (target, _), e in zip(targets, red)]
     body.append(f"return {result}")
-    head = f"@numba.njit({signature!r}, {_OPTIONS})\n" if signature else ""
-    return head + f"def {name}({arguments}):\n" + "".join(f"    {line}\n" for line in body)
+    return f"def {name}({arguments}):\n" + "".join(f"    {line}\n" for line in body)
 
 
-def hamiltonian_source(eqs: Equations, n_params: int, *, compiled: bool) -> str:
-    """Module text (``compiled``: numba, each function compiled eagerly for its signature; else plain
-    Python) of ``mass``, ``lagrangian`` and ``second`` for ``eqs`` — see the module docstring."""
+def hamiltonian_source(eqs: Equations, n_params: int) -> str:
+    """Plain-Python module text of ``mass``, ``lagrangian`` and ``second`` for ``eqs`` (module docstring)."""
     check_hamiltonian(eqs)
     n = eqs.n
     ren = rename_map(eqs)
@@ -104,17 +102,20 @@ def hamiltonian_source(eqs: Equations, n_params: int, *, compiled: bool) -> str:
                     for i in range(n) for j in range(i, n)]
     mass_targets += [(f"b[{i}]", r(pieces["b"][i])) for i in range(n)]
     lag_targets = [(f"Lq[{i}]", r(pieces["Lq"][i])) for i in range(n)] + [("L", r(pieces["L"]))]
-    second_targets = [(f"Lqq[{i}, {j}]" if i == j else f"Lqq[{i}, {j}] = Lqq[{j}, {i}]", r(pieces["Lqq"][i][j]))
-                      for i in range(n) for j in range(i, n)]
+    second_targets = [(f"Lqq[{i}, {j}]" if i == j else f"Lqq[{i}, {j}] = Lqq[{j}, {i}]", r(e))
+                      for (i, j), e in pieces["Lqq"].items()]
     second_targets += [(f"Lqv[{i}, {j}]", r(pieces["Lqv"][i][j])) for i in range(n) for j in range(n)]
-    sig = compiled
     parts = [
-        _function("mass", "t, q, p, M, b", read_q + read_p, mass_targets, "True", MASS_SIGNATURE if sig else None),
-        _function("lagrangian", "t, q, v, p, Lq", read_q + read_v + read_p, lag_targets, "float(L)",
-                  LAGRANGIAN_SIGNATURE if sig else None),
-        _function("second", "t, q, v, p, Lqq, Lqv", read_q + read_v + read_p, second_targets, "True",
-                  SECOND_SIGNATURE if sig else None),
+        _function("mass", "t, q, p, M, b", read_q + read_p, mass_targets, "True"),
+        _function("lagrangian", "t, q, v, p, Lq", read_q + read_v + read_p, lag_targets, "float(L)"),
+        _function("second", "t, q, v, p, Lqq, Lqv", read_q + read_v + read_p, second_targets, "True"),
     ]
-    header = "import math\n" + ("\nimport numba\n" if compiled else "") + "\n\n"
-    return header + "\n\n".join(parts)
+    return "import math\n\n\n" + "\n\n".join(parts)
 
+
+def compiled_source(source: str) -> str:
+    """The numba module of :func:`hamiltonian_source`'s text: each function compiled eagerly for its
+    signature, with ``error_model='numpy'`` (a singular value gives inf or nan, which the loop reports)."""
+    from .numba_backend import decorate
+
+    return "import numba\n" + decorate(source, _SIGNATURES, "cache=True, error_model='numpy'")

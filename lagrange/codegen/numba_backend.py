@@ -17,7 +17,7 @@ import os
 import platform
 import sys
 import tempfile
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 from pathlib import Path
 
 from ..errors import BackendError
@@ -26,7 +26,6 @@ __all__ = ["numba_rhs", "cache_dir", "cache_key", "write_module", "atomic_write"
            "decorate", "purge_numba_cache"]
 
 _HEADER = "import math\nimport numpy as np\nimport numba\n\n\n"
-_DECORATOR = "@numba.njit(cache=True, error_model='python')\n"
 
 
 def cache_dir() -> Path:
@@ -111,12 +110,21 @@ def import_module(name: str, path: Path):
     return module
 
 
-def decorate(source: str) -> str:
-    """Put ``@numba.njit(cache=True, error_model='python')`` above every top-level ``def`` of ``source`` that
-    has no decorator of its own (one compiled eagerly with an explicit signature keeps its own)."""
+def decorate(source: str, signatures: Mapping[str, str] | None = None,
+             options: str = "cache=True, error_model='python'") -> str:
+    """Put ``@numba.njit(options)`` above every top-level ``def`` of ``source`` that has no decorator of its
+    own (one compiled eagerly with an explicit signature keeps its own); a function named in ``signatures``
+    gets ``@numba.njit(signature, options)``, compiled eagerly for that signature."""
+    signatures = signatures or {}
     lines = source.splitlines(keepends=True)
-    return "".join(_DECORATOR + line if line.startswith("def ") and not (k and lines[k - 1].startswith("@"))
-                   else line for k, line in enumerate(lines))
+    out = []
+    for k, line in enumerate(lines):
+        if line.startswith("def ") and not (k and lines[k - 1].startswith("@")):
+            name = line[4:line.index("(")]
+            sig = f"{signatures[name]!r}, " if name in signatures else ""
+            out.append(f"@numba.njit({sig}{options})\n")
+        out.append(line)
+    return "".join(out)
 
 
 def numba_rhs(source: str) -> Callable:

@@ -127,10 +127,11 @@ def _run_python(hm, scheme, t0, h, steps, stride, y0, where) -> tuple[np.ndarray
 
 def _compiled_module(hm):
     """The numba module of the model's generated Hamiltonian pieces (compiled once, cached on disk)."""
+    from ..codegen.hamiltonian_source import compiled_source
     from ..codegen.numba_backend import load_cached
     from .hamiltonian_model import generated_source
 
-    return load_cached("ham", generated_source(hm.equations, len(hm.params), compiled=True),
+    return load_cached("ham", compiled_source(generated_source(hm.equations, len(hm.params))),
                        "the generated Hamiltonian pieces")
 
 

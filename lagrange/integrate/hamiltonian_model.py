@@ -51,17 +51,17 @@ class HamiltonianModel:
         return np.vstack([Hz[n:, :], -Hz[:n, :]])
 
 
-def generated_source(eqs, n_params: int, *, compiled: bool) -> str:
+def generated_source(eqs, n_params: int) -> str:
     """:func:`~lagrange.codegen.hamiltonian_source.hamiltonian_source` of ``eqs``, from the derivation cache
-    (and memoized per Equations in this process)."""
+    (and memoized per Equations in this process); the compiled loop decorates the same text
+    (:func:`~lagrange.codegen.hamiltonian_source.compiled_source`)."""
     from ..codegen.derivation_cache import cached_source
 
-    key = (n_params, compiled)
     memo = _SOURCES.setdefault(eqs, {})
-    if key not in memo:
-        options = f"hamiltonian pieces; n_params {n_params}; {'numba' if compiled else 'python'}"
-        memo[key] = cached_source(eqs, options, lambda: hamiltonian_source(eqs, n_params, compiled=compiled))
-    return memo[key]
+    if n_params not in memo:
+        memo[n_params] = cached_source(eqs, f"hamiltonian pieces; n_params {n_params}",
+                                       lambda: hamiltonian_source(eqs, n_params))
+    return memo[n_params]
 
 
 def hamiltonian_model(system, params: Mapping) -> HamiltonianModel:
@@ -91,7 +91,7 @@ def hamiltonian_model(system, params: Mapping) -> HamiltonianModel:
 def _build(eqs, pvals: np.ndarray) -> HamiltonianModel:
     n = eqs.n
     namespace: dict = {}
-    exec(compile(generated_source(eqs, len(pvals), compiled=False), "<lagrange hamiltonian>", "exec"), namespace)
+    exec(compile(generated_source(eqs, len(pvals)), "<lagrange hamiltonian>", "exec"), namespace)
     mass, lagrangian, second = namespace["mass"], namespace["lagrangian"], namespace["second"]
     pc = tuple(float(v) for v in pvals)
 
