@@ -41,8 +41,8 @@ from ..errors import BackendError, IntegrationError
 from ..model.coordinates import state_text
 from ..results.trajectory import Trajectory
 
-__all__ = ["LOOPS", "LOOP_METHODS", "LoopStatus", "LoopResult", "choose_loop", "kernel", "loops", "run_loop",
-           "integrate_compiled", "stopped_error", "check_output_times", "first_class"]
+__all__ = ["LOOPS", "LOOP_METHODS", "LoopStatus", "LoopResult", "choose_loop", "loop_backend", "kernel", "loops",
+           "run_loop", "integrate_compiled", "stopped_error", "check_output_times", "first_class"]
 
 LOOPS = ("auto", "scipy", "compiled")
 #: the methods of the compiled loop (functions of the same name, lower case, in ``_rk_loops``)
@@ -108,6 +108,19 @@ def unsupported(eqs, method: str, *, events, switches) -> str | None:
     return None
 
 
+def loop_backend(loop: str, *, backend: str, model: NumericModel | None) -> str:
+    """The backend a run with ``loop`` will have (the given model's, else the requested one, ``"auto"``
+    resolved), after checking ``loop``: :class:`TypeError` for an unknown one, :class:`BackendError` for
+    ``"compiled"`` without numba. Shared by the adaptive and the fixed-step loops."""
+    if loop not in LOOPS:
+        raise TypeError(f"loop must be one of {', '.join(map(repr, LOOPS))}, got {loop!r}")
+    if loop == "compiled" and not _numba_available():
+        raise BackendError("loop='compiled' needs numba: install it with `pip install lagrange[fast]`")
+    if model is not None:
+        return model.backend
+    return ("numba" if _numba_available() else "python") if backend == "auto" else backend
+
+
 def choose_loop(loop: str, *, backend: str, model: NumericModel | None, eqs, method: str, events, switches
                 ) -> tuple[bool, str]:
     """``(use the compiled loop?, note for the method label)`` for ``simulate(loop=...)``.
@@ -116,18 +129,11 @@ def choose_loop(loop: str, *, backend: str, model: NumericModel | None, eqs, met
     unknown ``loop`` or, with ``loop="compiled"``, an unsupported feature; :class:`BackendError` when
     numba is missing or the given model (or ``backend="reference"``) is not numba code.
     """
-    if loop not in LOOPS:
-        raise TypeError(f"loop must be one of {', '.join(map(repr, LOOPS))}, got {loop!r}")
-    if model is not None:
-        effective = model.backend
-    else:
-        effective = ("numba" if _numba_available() else "python") if backend == "auto" else backend
+    effective = loop_backend(loop, backend=backend, model=model)
     if loop == "scipy":
         return False, "scipy loop" if effective == "numba" else ""
     why = unsupported(eqs, method, events=events, switches=switches)
     if loop == "compiled":
-        if not _numba_available():
-            raise BackendError("loop='compiled' needs numba: install it with `pip install lagrange[fast]`")
         if effective == "reference" or (model is not None and effective != "numba"):
             raise BackendError(f"loop='compiled' runs generated numba code, but the model's backend is "
                                f"{effective!r}: use backend='numba'")

@@ -14,7 +14,7 @@ import math
 import numpy as np
 
 from ..conventions import VELOCITY_SUFFIX
-from ..errors import BackendError, IntegrationError
+from ..errors import IntegrationError
 from ..model.coordinates import coordinate_name
 from ..results.trajectory import Trajectory
 from .base import diverged, non_finite_state, not_converged, singular_jacobian, step_prefix
@@ -41,19 +41,10 @@ def fixed_loop(loop: str, *, backend: str, model=None) -> bool:
     methods), ``"auto"`` when the model's backend (or the requested one) is numba — as for the adaptive
     methods. Raises :class:`TypeError` for an unknown ``loop`` and :class:`BackendError` when numba is missing.
     """
-    from .compiled import LOOPS, _numba_available
+    from .compiled import loop_backend
 
-    if loop not in LOOPS:
-        raise TypeError(f"loop must be one of {', '.join(map(repr, LOOPS))}, got {loop!r}")
-    if loop == "scipy":
-        return False
-    if loop == "compiled":
-        if not _numba_available():
-            raise BackendError("loop='compiled' needs numba: install it with `pip install lagrange[fast]`")
-        return True
-    if model is not None:
-        return model.backend == "numba"
-    return backend == "numba" or (backend == "auto" and _numba_available())
+    effective = loop_backend(loop, backend=backend, model=model)
+    return loop == "compiled" or (loop == "auto" and effective == "numba")
 
 
 def integrate_fixed(system, t_span, y0, params, *, method: str, step: float, n_points: int = 1001,
