@@ -10,9 +10,11 @@ else ``~/.cache/lagrange``), next to the numba modules:
     declaration (coordinates with their assumptions, T, V, P, the Rayleigh function, the generalized
     forces, the constraints, prescribed motions, declared parameters, name) and of :func:`environment`;
 ``source_<key>.txt``
-    the generated source of one backend, under a SHA-256 of the ``srepr`` of the whole ``Equations``
-    (:func:`equations_fingerprint`: content-addressed, so equations built any other way hit exactly when
-    their content is the same), the code generator's options and :func:`environment`.
+    the generated source of one backend, under a SHA-256 of the equations' fingerprint
+    (:func:`equations_fingerprint`), the code generator's options and :func:`environment`. Equations
+    derived from a declaration are fingerprinted by their declaration key (the derivation is a function of
+    the declaration and the environment, both in the key); equations built any other way by the ``srepr``
+    of their content, so they hit exactly when their content is the same.
 
 :func:`environment` names the entry format, the lagrange version *and a hash of the source files of the
 stages that make the entries* (:data:`SOURCES`: an edited checkout never reuses an entry made by other
@@ -196,8 +198,8 @@ def _remember(eqs: Equations, fingerprint: str | None) -> str | None:
 def equations_fingerprint(eqs: Equations) -> str | None:
     """SHA-256 of the ``srepr`` of every field of ``eqs`` (None when it holds an unknown sympy class).
 
-    Memoized per object; equations loaded from the cache come with the fingerprint stored in their entry,
-    so a warm run does not print them again.
+    Memoized per object; equations derived or loaded by :func:`cached_equations` come with the fingerprint
+    of their entry (a digest of the declaration key), so they are never printed.
     """
     known = _FINGERPRINTS.get(id(eqs))
     if known is not None and known[0]() is eqs:
@@ -297,7 +299,10 @@ def cached_equations(system, derive: Callable) -> Equations:
             _remember(eqs, fingerprint)
             return eqs
     eqs = derive(system)
-    fingerprint = equations_fingerprint(eqs)
+    # equations derived from this declaration in this environment are named by its key: printing their
+    # srepr for a content fingerprint would cost more than the derivation itself on a large model (Greenspan's
+    # rigid top: 116 ms of a 0.6 s first result)
+    fingerprint = _remember(eqs, _digest("equations derived from", key))
     if fingerprint is not None:
         try:
             payload = pickle.dumps((eqs, fingerprint), protocol=pickle.HIGHEST_PROTOCOL)

@@ -41,6 +41,14 @@ _INV = {v: k for k, v in OPCODES.items()}
 UNROLL_TERMS = 2000
 
 
+def pow0_text(x: str, c: float) -> str:
+    """Source of ``x**c`` at order 0, as the interpreter computes it (``_taylor_loop._pow0``): the
+    half-integer powers by a square root, the rest by ``**``."""
+    special = {-1.5: f"1.0 / ({x} * math.sqrt({x}))", -0.5: f"1.0 / math.sqrt({x})", 0.5: f"math.sqrt({x})",
+               1.5: f"{x} * math.sqrt({x})"}
+    return special.get(c, f"{x} ** {c!r}")
+
+
 def _instruction(op: str, a: int, b: int, o: int, c: float) -> list[str]:
     """Lines computing ``S[o, k]`` (and ``S[b, k]`` for SINCOS) — the recurrences of ``_coefficient``."""
     conv = {
@@ -67,7 +75,8 @@ def _instruction(op: str, a: int, b: int, o: int, c: float) -> list[str]:
         "LOG": ["if k == 0:", f"    S[{o}, 0] = math.log(S[{a}, 0]) if S[{a}, 0] > 0.0 else math.nan", "else:",
                 "    s = 0.0", "    for j in range(1, k):", f"        s += j * S[{o}, j] * S[{a}, k - j]",
                 f"    S[{o}, k] = (S[{a}, k] - s * (1.0 / k)) * (1.0 / S[{a}, 0])"],
-        "POW": ["if k == 0:", f"    S[{o}, 0] = S[{a}, 0] ** {c!r}", "else:", "    s = 0.0", "    for j in range(k):",
+        "POW": ["if k == 0:", f"    S[{o}, 0] = {pow0_text(f'S[{a}, 0]', c)}", "else:", "    s = 0.0",
+                "    for j in range(k):",
                 f"        s += ({c!r} * (k - j) - j) * S[{a}, k - j] * S[{o}, j]",
                 f"    S[{o}, k] = s * (1.0 / (k * S[{a}, 0]))"],
     }
@@ -205,7 +214,7 @@ def unrolled_source(tape: Tape, order: int) -> str:
                      f"({v(a, k)} - ({total([f'{j}.0 * {v(o, j)} * {v(a, k - j)}' for j in range(1, k)])})"
                      f" * {1 / k!r}) * (1.0 / {v(a, 0)})")
             elif name == "POW":
-                e = (f"{v(a, 0)} ** {c!r}" if k == 0 else
+                e = (pow0_text(v(a, 0), c) if k == 0 else
                      f"({total([f'{c * (k - j) - j!r} * {v(a, k - j)} * {v(o, j)}' for j in range(k)])})"
                      f" * (1.0 / ({k}.0 * {v(a, 0)}))")
             else:  # pragma: no cover - the tape has no other variable instructions

@@ -73,6 +73,21 @@ TAYLOR_FN = TAYLOR.return_type(FunctionType(SERIES), _I2, _F1, types.int64, type
 
 
 @njit(cache=True, error_model="numpy", inline="always")
+def _pow0(x: float, c: float) -> float:
+    """``x**c`` at order 0: the half-integer powers (gravitation's r^−3/2, a pendulum's length) by a square
+    root, a third of ``pow``'s cost; :func:`lagrange.codegen.taylor_source.pow0_text` writes the same."""
+    if c == -1.5:
+        return 1.0 / (x * math.sqrt(x))
+    if c == -0.5:
+        return 1.0 / math.sqrt(x)
+    if c == 0.5:
+        return math.sqrt(x)
+    if c == 1.5:
+        return x * math.sqrt(x)
+    return x ** c
+
+
+@njit(cache=True, error_model="numpy", inline="always")
 def _coefficient(op: int, a: int, b: int, o: int, c: float, S, k: int) -> None:
     """Coefficient ``k`` of slot ``o`` (see the module docstring); ``S[:, :k]`` is known."""
     if op == MUL:
@@ -131,7 +146,7 @@ def _coefficient(op: int, a: int, b: int, o: int, c: float, S, k: int) -> None:
             S[o, k] = (S[a, k] - s * (1.0 / k)) * (1.0 / S[a, 0])
     elif op == POW:
         if k == 0:
-            S[o, 0] = S[a, 0] ** c
+            S[o, 0] = _pow0(S[a, 0], c)
         else:
             s = 0.0
             for j in range(k):
@@ -212,9 +227,15 @@ def _horner(S, nz: int, p_order: int, x: float, out) -> None:
 
 
 @njit(cache=True, error_model="numpy")
-def _step_size(S, nz: int, p_order: int, floor: float) -> float:
-    """Jorba & Zou's step: ρ/e² · exp(−0.7/(p−1)), ρ from the last two orders (module docstring); NaN when a
-    coefficient of order 0, p − 1 or p is not finite."""
+def _step_rule(p_order: int):
+    """The constants of Jorba & Zou's step for order p: ``(1/(p−1), 1/p, exp(−0.7/(p−1))/e²)``, once per run."""
+    return 1.0 / (p_order - 1), 1.0 / p_order, math.exp(-0.7 / (p_order - 1)) / (math.e * math.e)
+
+
+@njit(cache=True, error_model="numpy", inline="always")
+def _step_size(S, nz: int, p_order: int, floor: float, rule) -> float:
+    """Jorba & Zou's step: ρ/e² · exp(−0.7/(p−1)), ρ from the last two orders (module docstring; ``rule`` from
+    :func:`_step_rule`); NaN when a coefficient of order 0, p − 1 or p is not finite."""
     n0 = 0.0
     n1 = 0.0
     n2 = 0.0
@@ -229,10 +250,10 @@ def _step_size(S, nz: int, p_order: int, floor: float) -> float:
     scale = max(floor, n0)
     rho = math.inf
     if n1 > 0.0:
-        rho = (scale / n1) ** (1.0 / (p_order - 1))
+        rho = (scale / n1) ** rule[0]
     if n2 > 0.0:
-        rho = min(rho, (scale / n2) ** (1.0 / p_order))
-    return rho / (math.e * math.e) * math.exp(-0.7 / (p_order - 1))
+        rho = min(rho, (scale / n2) ** rule[1])
+    return rho * rule[2]
 
 
 @njit(cache=True, error_model="numpy")
@@ -249,10 +270,10 @@ def _constants(const_code, const_vals, n_slots, n, p_order, p):
 
 
 @njit(cache=True, error_model="numpy", inline="always")
-def _advance(S, nz, p_order, floor, max_step, t, t1, direction, t_eval, n_out, Y, z):
+def _advance(S, nz, p_order, floor, rule, max_step, t, t1, direction, t_eval, n_out, Y, z):
     """After the series at ``t``: check it, take Jorba & Zou's step (writing outputs at ``t_eval`` in it and the
     new state into ``z``); ``(status, t_new, n_out)``."""
-    h_abs = _step_size(S, nz, p_order, floor)
+    h_abs = _step_size(S, nz, p_order, floor, rule)
     if h_abs != h_abs:  # a NaN norm: non-finite coefficients
         return 2, t, n_out
     h_abs = min(h_abs, max_step)
@@ -286,6 +307,7 @@ def taylor(const_code, const_vals, code, consts, n_slots, n, nz, mass, force, po
     :class:`lagrange.integrate.compiled.LoopStatus`.
     """
     S, acc, L, d, Mk, r = _constants(const_code, const_vals, n_slots, n, p_order, p)
+    rule = _step_rule(p_order)
     z = z0.copy()
     Y = np.empty((t_eval.size, nz))
     slot_w = 2 * n if nz > 2 * n else -1
@@ -297,7 +319,7 @@ def taylor(const_code, const_vals, code, consts, n_slots, n, nz, mass, force, po
         S[:nz, 0] = z
         if not _series(code, consts, n, slot_t, slot_w, mass, force, power, p_order, t, S, acc, L, d, Mk, r):
             return 3, t, z, Y, n_out, steps
-        status, t, n_out = _advance(S, nz, p_order, floor, max_step, t, t1, direction, t_eval, n_out, Y, z)
+        status, t, n_out = _advance(S, nz, p_order, floor, rule, max_step, t, t1, direction, t_eval, n_out, Y, z)
         if status != 0:
             return status, t, z, Y, n_out, steps
         steps += 1
@@ -309,6 +331,7 @@ def taylor_fn(series, const_code, const_vals, n_slots, n, nz, t0, t1, z0, p, flo
     """:func:`taylor` with the model's compiled ``series`` (:mod:`lagrange.codegen.taylor_source`) instead of
     the interpreter; same results."""
     S, acc, L, d, Mk, r = _constants(const_code, const_vals, n_slots, n, p_order, p)
+    rule = _step_rule(p_order)
     z = z0.copy()
     Y = np.empty((t_eval.size, nz))
     direction = 1.0 if t1 >= t0 else -1.0
@@ -319,7 +342,7 @@ def taylor_fn(series, const_code, const_vals, n_slots, n, nz, t0, t1, z0, p, flo
         S[:nz, 0] = z
         if not series(t, S, acc, L, d, Mk, r, p_order):
             return 3, t, z, Y, n_out, steps
-        status, t, n_out = _advance(S, nz, p_order, floor, max_step, t, t1, direction, t_eval, n_out, Y, z)
+        status, t, n_out = _advance(S, nz, p_order, floor, rule, max_step, t, t1, direction, t_eval, n_out, Y, z)
         if status != 0:
             return status, t, z, Y, n_out, steps
         steps += 1

@@ -67,11 +67,14 @@ class LoopStatus(Enum):
 
     @classmethod
     def from_code(cls, code: int) -> LoopStatus:
-        return next(s for s in cls if s.value[0] == code)
+        return _STATUS_OF_CODE[code]
 
     @property
     def message(self) -> str:
         return self.value[1]
+
+
+_STATUS_OF_CODE = {s.value[0]: s for s in LoopStatus}
 
 
 @dataclass(frozen=True)
@@ -301,11 +304,15 @@ def check_output_times(t_eval, t0: float, t1: float) -> np.ndarray:
         raise ValueError("t_eval must be 1-dimensional")
     if not t_eval.size:
         return t_eval
+    lo, hi = min(t0, t1), max(t0, t1)
     # NaN fails every comparison: "not within" (as scipy's any(t_eval < lo) would miss it, it must not pass)
-    if not (t_eval.min() >= min(t0, t1) and t_eval.max() <= max(t0, t1)):
+    if t_eval.size == 1:  # the common single output time, without array reductions
+        if not lo <= float(t_eval[0]) <= hi:
+            raise ValueError("Values in `t_eval` are not within `t_span`.")
+        return t_eval
+    if not (t_eval.min() >= lo and t_eval.max() <= hi):
         raise ValueError("Values in `t_eval` are not within `t_span`.")
-    if t_eval.size > 1:
-        d = np.diff(t_eval)
-        if (t1 > t0 and not d.min() > 0) or (t1 < t0 and not d.max() < 0):
-            raise ValueError("Values in `t_eval` are not properly sorted.")
+    d = np.diff(t_eval)
+    if (t1 > t0 and not d.min() > 0) or (t1 < t0 and not d.max() < 0):
+        raise ValueError("Values in `t_eval` are not properly sorted.")
     return t_eval

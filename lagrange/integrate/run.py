@@ -9,10 +9,12 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping, Sequence
+from functools import lru_cache
 
 import numpy as np
 import sympy as sp
 from scipy.integrate import solve_ivp
+from scipy.linalg.lapack import dsyev
 
 from ..codegen.cse import numeric_arguments, rename_map
 from ..codegen.numeric import NumericModel, compile_equations, lam_required
@@ -33,21 +35,16 @@ def initial_state(coords: Sequence, initial: Mapping) -> np.ndarray:
 
     Raises :class:`InitialConditionError` naming every missing, unknown or non-finite entry.
     """
-    n = len(coords)
-    names = [coordinate_name(c) for c in coords]
-    slots: dict[int, float] = {}
+    names, slot_of = _slots(tuple(coords))
+    n = len(names)
+    values = [math.nan] * (2 * n)
+    filled = [False] * (2 * n)
     problems = []
     for key, value in initial.items():
-        idx = None
-        if isinstance(key, str):
-            if key in names:
-                idx = names.index(key)
-            elif key.endswith(VELOCITY_SUFFIX) and key[: -len(VELOCITY_SUFFIX)] in names:
-                idx = n + names.index(key[: -len(VELOCITY_SUFFIX)])
-        elif is_coordinate(key) and key in coords:
-            idx = coords.index(key)
-        elif isinstance(key, sp.Derivative) and key.expr in coords and key.derivative_count == 1:
-            idx = n + coords.index(key.expr)
+        try:
+            idx = slot_of.get(key)
+        except TypeError:  # an unhashable key
+            idx = None
         if idx is None:
             problems.append(f"{key} is not a coordinate or velocity of this system ({', '.join(names)})")
             continue
@@ -58,13 +55,30 @@ def initial_state(coords: Sequence, initial: Mapping) -> np.ndarray:
             continue
         if not math.isfinite(v):
             problems.append(f"initial value of {key} = {v} is not finite")
-        slots[idx] = v
-    missing = [names[i] if i < n else names[i - n] + VELOCITY_SUFFIX for i in range(2 * n) if i not in slots]
-    if missing:
+        values[idx], filled[idx] = v, True
+    if not all(filled):
+        missing = [names[i] if i < n else names[i - n] + VELOCITY_SUFFIX for i in range(2 * n) if not filled[i]]
         problems.append(f"missing initial value(s) for {', '.join(missing)}")
     if problems:
         raise InitialConditionError("; ".join(problems))
-    return np.array([slots[i] for i in range(2 * n)], dtype=float)
+    return np.array(values, dtype=float)
+
+
+@lru_cache(maxsize=256)
+def _slots(coords: tuple) -> tuple[list[str], dict]:
+    """The coordinate names and the state slot of every accepted key: a coordinate or its name (i), its
+    velocity ``q.diff(t)`` or ``"<name>_dot"`` (n + i)."""
+    n = len(coords)
+    names = [coordinate_name(c) for c in coords]
+    slot_of: dict = {}
+    for i, (c, name) in enumerate(zip(coords, names)):  # names first: a coordinate may be called "x_dot"
+        slot_of.setdefault(name, i)
+        if is_coordinate(c):
+            slot_of.setdefault(c, i)
+            slot_of.setdefault(c.diff(c.args[0]), n + i)
+    for i, name in enumerate(names):
+        slot_of.setdefault(name + VELOCITY_SUFFIX, n + i)
+    return names, slot_of
 
 
 def _stiffness(eqs, params, t_span, y0) -> tuple[float, float] | None:
@@ -319,9 +333,9 @@ def _check_initial_mass_matrix(system, model: NumericModel, t0: float, y0) -> No
     except SingularMassMatrixError as exc:
         raise SingularMassMatrixError(str(exc).rstrip(".") + "." + hint) from None
     if hint and not model.m:
-        M, _ = model.mass_and_forcing(t0, y0)
-        w = np.abs(np.linalg.eigvalsh(M))  # M is symmetric: its 2-norm condition number, at half the cost of SVD
-        cond = w.max() / w.min() if w.min() > 0 else math.inf
+        w, _, info = dsyev(model.mass_matrix(t0, y0), compute_v=0)  # M is symmetric: LAPACK's eigenvalues
+        w = [abs(x) for x in w.tolist()]
+        cond = max(w) / min(w) if info == 0 and min(w) > 0 else math.inf  # its 2-norm condition number
         if cond > 1e8:
             import warnings
 
