@@ -62,7 +62,7 @@ def _all_operations_system():
     the half-integer powers ±1/2, ±3/2 that order 0 takes by a square root, besides the generic 5/2)."""
     x = coordinates("x")
     a = parameters("a")
-    T = (1 + x**2 / 4) * x.diff(t) ** 2 / 2 + sp.exp(-x**2) * x.diff(t) ** 2 / 10
+    T = (1 + x**2 / 4) * x.diff(t) ** 2 / 2 + sp.exp(-x**2) * x.diff(t) ** 2 / 10 + x.diff(t) ** 2 / sp.sqrt(9 + x**2)
     V = (a * x**2 / 2 + sp.log(2 + x**2) + sp.cosh(x / 3) + sp.tan(x / 4) + sp.sqrt(1 + x**2)
          + (3 + x**2) ** sp.Rational(5, 2) / 50 + sp.sinh(x / 5) * sp.tanh(x / 2) + 1 / (2 + sp.cos(x)) + 2**x / 7
          + (1 + x**2) ** sp.Rational(3, 2) / 40 + 1 / sp.sqrt(5 + x**2) + (4 + x**2) ** sp.Rational(-3, 2))
