@@ -48,11 +48,13 @@ ROUTES = {
     "numba": "lagrange, numba backend (cold JIT), DOP853, scipy loop",
     "compiled": "lagrange, numba compiled loop (cold JIT), DOP853",
     "compiled_primed": "lagrange, numba compiled loop, DOP853, loops compiled by an earlier process (new model)",
-    "taylor": "lagrange, taylor (interpreted tape), empty caches: includes the one-time kernel compile",
-    "taylor_primed": "lagrange, taylor (interpreted tape), kernel compiled by an earlier process (new model)",
+    "taylor": "lagrange, taylor (interpreted tape), empty caches: includes the one-time build of the interpreter",
+    "taylor_primed": "lagrange, taylor (interpreted tape), interpreter built by an earlier process (new model)",
+    "taylor_numba_primed": "lagrange, taylor (tape interpreted by numba, no C), kernel compiled by an earlier "
+                           "process (new model)",
     "python_rerun": "lagrange, python backend, DOP853, re-run (derivation and code from the on-disk cache)",
     "python_auto": "lagrange, python backend, method='auto' (its pick in the label note)",
-    "taylor_rerun": "lagrange, taylor (interpreted tape), re-run (derivation, code and kernel cached)",
+    "taylor_rerun": "lagrange, taylor (interpreted tape), re-run (derivation, code and interpreter cached)",
     "sympy": "plain sympy.physics.mechanics + lambdify(cse) + solve_ivp DOP853",
     "heyoka": "heyoka.py (lagrangian + taylor_adaptive, cold LLVM compile)",
     "heyoka_rerun": "heyoka.py, re-run (compiled code from heyoka's on-disk cache)",
@@ -61,9 +63,16 @@ ROUTES = {
 
 
 #: what an earlier process leaves in the cache for the ``*_primed`` routes: the generic kernels only
-_PRIME = {"taylor_primed": "from lagrange.integrate.compiled import kernel; "
+_PRIME = {"taylor_primed": "from lagrange.integrate.taylor import interpreter; from lagrange.integrate.c_taylor "
+                           "import library; from lagrange.integrate.compiled import kernel; library() if "
+                           "interpreter() == 'c' else "
                            "kernel('_taylor_loop.py', 'taylorloop', 'taylor').entry('taylor')",
+          "taylor_numba_primed": "from lagrange.integrate.compiled import kernel; "
+                                 "kernel('_taylor_loop.py', 'taylorloop', 'taylor').entry('taylor')",
           "compiled_primed": "from lagrange.integrate.compiled import loops; loops()"}
+
+#: routes that run the numba build of the tape interpreter even where a C compiler is available
+_NO_C = ("taylor_numba_primed",)
 
 
 @dataclass(frozen=True)
@@ -88,12 +97,23 @@ def routes_for(problem, *, heyoka: bool) -> list[str]:
     """The routes that apply to ``problem`` (numba ones only when numba is installed)."""
     import importlib.util
 
+    from ..errors import BackendError
+    from ..integrate.taylor import interpreter
+
     out = ["python", "python_rerun"] + ([] if problem.conservative else ["python_auto"])
-    if importlib.util.find_spec("numba") is not None:
-        if problem.name != "stick_slip":  # no friction switches in the compiled loop, no sign() in a Taylor series
-            out += ["numba", "compiled", "compiled_primed", "taylor", "taylor_primed", "taylor_rerun"]
-        else:
-            out += ["numba"]
+    has_numba = importlib.util.find_spec("numba") is not None
+    try:
+        tape_runs = interpreter() is not None
+    except BackendError:
+        tape_runs = False
+    if has_numba:
+        out += ["numba"]
+        if problem.name != "stick_slip":  # no friction switches in the compiled loop
+            out += ["compiled", "compiled_primed"]
+    if tape_runs and problem.name != "stick_slip":  # no sign() in a Taylor series
+        out += ["taylor", "taylor_primed", "taylor_rerun"]
+        if has_numba and interpreter() == "c":
+            out += ["taylor_numba_primed"]
     if problem.pendulum_links:
         out.append("sympy")
     if heyoka and problem.name != "stick_slip":
@@ -145,7 +165,7 @@ def _child(problem_name: str, route: str, tol: float, quick: bool) -> dict:
     _warm_sympy()  # an import cost, not timed for any route
     p = get_problem(problem_name, quick=quick)
     times = p.times()
-    if route not in ("python", "sympy") and not route.startswith("heyoka"):
+    if route.startswith(("numba", "compiled")) or route in _NO_C:
         import numba  # noqa: F401 - imports are not timed (heyoka's import is not either)
     if route == "sympy":
         from scipy.integrate import solve_ivp
@@ -182,8 +202,11 @@ def _child(problem_name: str, route: str, tol: float, quick: bool) -> dict:
     t0 = time.perf_counter()
     sol = system.simulate((0.0, p.t_end), p.initial, p.params, method=method, rtol=tol, atol=tol * p.atol_scale,
                           backend=backend, model=model, t_eval=times, **p.options, **loop)
+    note = sol.method.split(" ")[0] if method == "auto" else ""
+    if method == "taylor":
+        note = "interpreter: " + ("C" if "tape, c" in sol.method else "numba")
     return dict(derive=derive, compile=compile_s, integrate=time.perf_counter() - t0, states=sol.y.tolist(),
-                note=sol.method.split(" ")[0] if method == "auto" else "")
+                note=note)
 
 
 def first_result(problem, route: str, reference_states: np.ndarray, *, tol: float = 1e-10, quick: bool = False,
@@ -195,6 +218,8 @@ def first_result(problem, route: str, reference_states: np.ndarray, *, tol: floa
         # the derivation cache on, as by default (empty: a cold run pays for writing its entries)
         env = dict(os.environ, LAGRANGE_CACHE_DIR=tmp, NUMBA_CACHE_DIR=tmp, XDG_CACHE_HOME=tmp,
                    LAGRANGE_DERIVATION_CACHE="1")
+        if route in _NO_C:
+            env["LAGRANGE_C_TAYLOR"] = "0"
         if route.endswith("_primed"):  # an earlier process compiled the generic kernel, not this model
             subprocess.run([sys.executable, "-c", _PRIME[route]], env=env, capture_output=True, timeout=timeout)
         if route.endswith("_rerun"):  # the same run once before

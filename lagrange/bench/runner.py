@@ -114,6 +114,17 @@ def _numba_ok() -> bool:
     return importlib.util.find_spec("numba") is not None
 
 
+def _tape_interpreter() -> str | None:
+    """Who interprets Taylor tapes here (``"c"`` or ``"numba"``), or None."""
+    from ..errors import BackendError
+    from ..integrate.taylor import interpreter
+
+    try:
+        return interpreter()
+    except BackendError:
+        return None
+
+
 def method_specs(problem: BenchProblem, *, quick: bool = False, heyoka: bool = True) -> list[MethodSpec]:
     """The methods compared on ``problem``: scipy methods × backends through ``simulate`` (numba with
     ``loop="scipy"``), the compiled loop (DOP853, RK45), ``method="auto"`` on the stiff problem, the
@@ -129,9 +140,11 @@ def method_specs(problem: BenchProblem, *, quick: bool = False, heyoka: bool = T
         specs += [MethodSpec(f"{m} numba scipy loop", method=m, backend="numba", loop="scipy") for m in scipy_methods]
         specs += [MethodSpec(f"{m} numba compiled loop", method=m, backend="numba", loop="compiled")
                   for m in ("DOP853", "RK45")]
-    if not friction and _numba_ok():  # dry friction (sign) is not analytic: no Taylor series
-        specs.append(MethodSpec("taylor python (interpreted tape)", method="taylor"))
-        if not quick:
+    engine = _tape_interpreter()
+    if not friction and engine:  # dry friction (sign) is not analytic: no Taylor series
+        specs.append(MethodSpec(f"taylor python (tape interpreted {'in C' if engine == 'c' else 'by numba'})",
+                                method="taylor"))
+        if not quick and _numba_ok():
             specs.append(MethodSpec("taylor numba (compiled series)", method="taylor", backend="numba"))
     if problem.reference_method == "Radau":  # the stiff problem: what auto picks
         specs.append(MethodSpec("auto python", method="auto"))

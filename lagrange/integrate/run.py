@@ -97,12 +97,15 @@ def _stiffness(eqs, params, t_span, y0) -> tuple[float, float] | None:
 
 
 def _taylor_ready(eqs) -> bool:
-    """Whether ``method="taylor"`` can run ``eqs`` here (numba installed, analytic unconstrained equations)."""
+    """Whether ``method="taylor"`` can run ``eqs`` here (a C compiler or numba, analytic unconstrained
+    equations)."""
     from ..codegen.tape import TapeError
-    from .compiled import _numba_available
-    from .taylor import tape_of
+    from ..errors import BackendError
+    from .taylor import interpreter, tape_of
 
-    if not _numba_available():
+    try:
+        interpreter()
+    except BackendError:
         return False
     try:
         tape_of(eqs)
@@ -119,8 +122,8 @@ def choose_method(eqs, params=None, t_span=(0.0, 1.0), y0=None, rtol: float | No
     would need hundreds of thousands of steps). Otherwise dissipative systems (P or D) get LSODA, which
     switches to BDF if stiffness appears later. The rest get DOP853, the most efficient Runge–Kutta method
     at tight tolerances — or, when ``rtol ≤ 1e-11`` and the equations are analytic and unconstrained (and
-    numba is installed), the Taylor method, whose order grows with the accuracy at an unchanged step
-    (measured in ``benchmarks/results/workprecision.md``).
+    a C compiler or numba is there to run the tape), the Taylor method, whose order grows with the accuracy
+    at an unchanged step (measured in ``benchmarks/results/workprecision.md``).
     """
     horizon = abs(float(t_span[1]) - float(t_span[0]))
     st = _stiffness(eqs, params, t_span, y0)
@@ -355,7 +358,7 @@ def _model_for(eqs, params, model: NumericModel | None, backend: str, crhs=None)
 def _simulate_taylor(system, eqs, t_span, initial, params, *, model, backend, t_eval, n_points, rtol, atol,
                      max_step, events, switches, why) -> Trajectory:
     """``method="taylor"`` (:mod:`lagrange.integrate.taylor`): checks, model, initial state, run."""
-    from .taylor import integrate_taylor
+    from .taylor import integrate_taylor, interpreter
 
     if events:
         raise TypeError("method='taylor' does not locate events: use method='DOP853' (or another scipy method)")
@@ -366,8 +369,8 @@ def _simulate_taylor(system, eqs, t_span, initial, params, *, model, backend, t_
     y0 = initial_state(eqs.coordinates, initial)
     _check_initial_mass_matrix(system, model, t_span[0], y0)
     t_eval = np.linspace(t_span[0], t_span[1], n_points) if t_eval is None else t_eval
-    label = f"taylor ({'compiled series' if model.backend == 'numba' else 'interpreted tape'}" + (
-        f"; auto: {why})" if why else ")")
+    how = "compiled series" if model.backend == "numba" else f"interpreted tape, {interpreter()}"
+    label = f"taylor ({how}" + (f"; auto: {why})" if why else ")")
     try:
         return integrate_taylor(model, t_span, y0, t_eval, rtol=rtol, atol=atol, max_step=max_step, label=label)
     except ValueError as exc:
@@ -407,7 +410,8 @@ def simulate(
     method : one of ``DOP853`` (default), ``RK45``, ``RK23``, ``LSODA``, ``Radau``, ``BDF`` or ``auto``
         (the implicit ones get the generated Jacobian), ``taylor`` (adaptive Taylor series of order
         ``ceil(−ln(rtol)/2 + 1)`` for unconstrained analytic systems: nothing compiled per model with the
-        python backend, a compiled series with numba; needs numba; see :mod:`lagrange.integrate.taylor`),
+        python backend (the tape interpreted in C, or by numba without a C compiler), a compiled series
+        with numba; see :mod:`lagrange.integrate.taylor`),
         or a fixed-step geometric integrator for conservative unconstrained systems — ``midpoint``, ``gl4``,
         ``gl6`` (Gauss–Legendre, symplectic),
         ``verlet`` (Störmer–Verlet, needs a constant mass matrix and V(q)) or ``dg`` (discrete gradient,

@@ -243,3 +243,87 @@ def test_fractional_power_of_a_negative_number_is_a_named_fault_not_a_scipy_type
     for method in ("DOP853", "taylor"):
         with pytest.raises(IntegrationError, match=r"t=.*x="):
             s.simulate(10, {"x": 0.0, "x_dot": -2.0}, {}, method=method)
+
+
+# --- the interpreter built in C (lagrange.integrate.c_taylor) against the numba build -------------------------
+
+def _c_or_skip():
+    from lagrange.integrate import c_taylor
+
+    if c_taylor.library() is None:  # optional: no C compiler here (the numba interpreter runs instead)
+        pytest.skip(f"no C interpreter: {c_taylor.unavailable_reason()}")
+
+
+def _both_engines(system, params, y0, t_span, t_eval, tol):
+    from lagrange.integrate.taylor import integrate_taylor
+
+    model = system.compile(params)  # python backend: the tape is interpreted
+    out = []
+    for engine in ("c", "numba"):
+        try:
+            out.append(integrate_taylor(model, t_span, np.array(y0, dtype=float), t_eval, rtol=tol, atol=tol,
+                                        engine=engine))
+        except IntegrationError as exc:
+            out.append(exc)
+    return out
+
+
+@pytest.mark.parametrize("case", ["every_operation", "double_pendulum", "kepler_backward", "damped"])
+def test_c_interpreter_equals_the_numba_interpreter_bit_for_bit(case):
+    """A transcription kept honest: the same states, work integral and tape passes to the last bit (both
+    builds do the same operations in the same order, without fused multiply-adds, with the same libm)."""
+    _c_or_skip()
+    span, tt, tol = (0.0, 6.0), np.linspace(0.0, 6.0, 13), 1e-12
+    if case == "every_operation":
+        s, p, y0 = _all_operations_system(), {"a": 3.0}, [0.7, -0.4]
+    elif case == "double_pendulum":
+        s, p, y0 = n_link_pendulum(2), {"g": 9.81}, [0.6, -0.3, 0.0, 0.5]
+    elif case == "kepler_backward":
+        s, p, y0 = kepler_system(), {"m": 1.0, "mu": 1.0}, list(KEPLER_IC.values())
+        span, tt, tol = (0.0, -6.0), np.linspace(0.0, -6.0, 13), 1e-9
+    else:
+        s, x = _oscillator(rayleigh=parameters("c") * coordinates("x").diff(t) ** 2 / 2)
+        p, y0 = {"m": 1.0, "k": 4.0, "c": 0.3}, [1.0, 0.0]
+    c_run, numba_run = _both_engines(s, p, y0, span, tt, tol)
+    np.testing.assert_array_equal(c_run.y, numba_run.y)
+    np.testing.assert_array_equal(c_run.t, numba_run.t)
+    assert c_run.nfev == numba_run.nfev and c_run.message == numba_run.message
+    if case in ("every_operation", "damped"):
+        assert c_run.work is not None
+        np.testing.assert_array_equal(c_run.work, numba_run.work)
+
+
+def test_c_interpreter_stops_like_the_numba_interpreter():
+    """Faults: a finite-time blow-up and a mass matrix that vanishes — the same status, time, state and
+    partial trajectory from both builds."""
+    _c_or_skip()
+    x = coordinates("x")
+    blow_up = System([x], T=x.diff(t) ** 2 / 2, V=-x**4 / 4)
+    vanishing = System([x], T=(1 - x) * x.diff(t) ** 2 / 2)  # M = 1 − x reaches 0 at x = 1
+    for s, y0 in ((blow_up, [1.0, math.sqrt(0.5)]), (vanishing, [0.0, 1.0])):
+        c_err, numba_err = _both_engines(s, {}, y0, (0.0, 3.0), np.linspace(0.0, 3.0, 31), 1e-10)
+        assert isinstance(c_err, IntegrationError) and isinstance(numba_err, IntegrationError)
+        assert str(c_err) == str(numba_err) and c_err.t == numba_err.t
+        np.testing.assert_array_equal(c_err.partial.y, numba_err.partial.y)
+
+
+def test_simulate_says_which_interpreter_ran_and_falls_back_without_a_compiler(monkeypatch):
+    import os
+
+    from lagrange.integrate import c_taylor
+
+    s, _ = _oscillator()
+    run = dict(t_span=(0, 1), initial={"x": 1.0, "x_dot": 0.0}, params={"m": 1.0, "k": 1.0}, method="taylor",
+               n_points=3)
+    if c_taylor.library() is not None:
+        assert "interpreted tape, c" in s.simulate(**run).method
+    key = os.environ.get("LAGRANGE_CACHE_DIR")
+    for cc, reason in (("no-such-compiler-xyz", "no C compiler found"), ("false", "the C compiler failed")):
+        monkeypatch.setenv("CC", cc)  # another compiler is another library key: nothing cached for it
+        monkeypatch.delitem(c_taylor._LOADED, key, raising=False)  # restored after the test
+        assert c_taylor.library() is None and reason in c_taylor.unavailable_reason()
+        sol = s.simulate(**run)
+        assert "interpreted tape, numba" in sol.method
+        assert sol.y[-1, 0] == pytest.approx(math.cos(1.0), abs=1e-8)
+    monkeypatch.setenv("LAGRANGE_C_TAYLOR", "0")
+    assert c_taylor.library() is None and "LAGRANGE_C_TAYLOR=0" in c_taylor.unavailable_reason()

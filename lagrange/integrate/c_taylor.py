@@ -1,0 +1,138 @@
+"""The Taylor tape interpreter built in C (:file:`_taylor_interp.c`) and called through ctypes.
+
+Why a second build of the interpreter: a first result is dominated by fixed costs, and numba's first call in
+a process costs about 0.2 s (its typing and lowering registries load, even when the kernel comes from its
+cache), more than deriving and integrating a textbook system. The C library, compiled once per machine by
+the system's C compiler (about 0.3 s) and kept in :func:`~lagrange.codegen.numba_backend.cache_dir`, loads
+in about a millisecond. The source is a line-for-line transcription of
+:func:`lagrange.integrate._taylor_loop.taylor` (same operations in the same order, no fused multiply-adds,
+the same libm), so the two give identical results; the tests compare them bit for bit.
+
+Optional: with no C compiler (``$CC``, else Python's configured compiler, else ``cc``), a failed build, or
+``LAGRANGE_C_TAYLOR=0``, :func:`library` returns None and ``method="taylor"`` runs the numba interpreter
+(which needs numba). :func:`unavailable_reason` says why.
+"""
+
+from __future__ import annotations
+
+import ctypes
+import hashlib
+import os
+import platform
+import shlex
+import shutil
+import subprocess
+import sys
+import sysconfig
+import tempfile
+from pathlib import Path
+
+import numpy as np
+
+__all__ = ["CTaylor", "library", "unavailable_reason", "ENV_VAR"]
+
+#: set to 0 / off / false / no to never build or load the C interpreter
+ENV_VAR = "LAGRANGE_C_TAYLOR"
+SOURCE = Path(__file__).with_name("_taylor_interp.c")
+FLAGS = ("-O2", "-std=c99", "-fPIC", "-shared", "-ffp-contract=off")
+
+_LOADED: dict = {}  # cache directory -> CTaylor, or the reason it is unavailable (str)
+
+_I64, _F64, _P = ctypes.c_int64, ctypes.c_double, ctypes.c_void_p
+_ARGTYPES = [_P, _P, _I64, _P, _P, _I64, _I64, _I64, _I64, _P, _P, _I64, _I64, _F64, _F64, _P, _P, _F64, _I64, _F64,
+             _P, _I64, _I64, _P, _P, _P, _P, _P]
+
+
+def _disabled() -> bool:
+    return os.environ.get(ENV_VAR, "1").strip().lower() in ("0", "off", "false", "no")
+
+
+def _compiler() -> list[str] | None:
+    cc = os.environ.get("CC") or sysconfig.get_config_var("CC") or "cc"
+    argv = shlex.split(cc)
+    return argv if argv and shutil.which(argv[0]) else None
+
+
+class CTaylor:
+    """The loaded library; :meth:`run` has the signature and results of the numba interpreter's entry."""
+
+    def __init__(self, path: Path):
+        self.path = path
+        self._lib = ctypes.CDLL(str(path))
+        self._fn = self._lib.lagrange_taylor
+        self._fn.argtypes = _ARGTYPES
+        self._fn.restype = _I64
+
+    def run(self, tape, t0: float, t1: float, z0: np.ndarray, p: np.ndarray, floor: float, order: int,
+            max_step: float, t_eval: np.ndarray, max_steps: int):
+        """``(status, t reached, z reached, Y, n_out, steps)`` as :func:`lagrange.integrate._taylor_loop.taylor`
+        (``z0``, ``p``, ``t_eval``: contiguous float64 arrays)."""
+        nz = int(tape.nz)
+        Y = np.empty((t_eval.size, nz))
+        z_end = np.empty(nz)
+        out_t = np.empty(1)
+        counts = np.zeros(2, dtype=np.int64)
+        c = tape.const_code, tape.const_vals, tape.code, tape.consts, tape.mass, tape.force
+        status = self._fn(c[0].ctypes.data, c[1].ctypes.data, c[0].shape[0], c[2].ctypes.data, c[3].ctypes.data,
+                          c[2].shape[0], tape.n_slots, tape.n, nz, c[4].ctypes.data, c[5].ctypes.data, tape.power,
+                          tape.slot_t, t0, t1, z0.ctypes.data, p.ctypes.data, floor, order, max_step,
+                          t_eval.ctypes.data, t_eval.size, max_steps, Y.ctypes.data, out_t.ctypes.data,
+                          z_end.ctypes.data, counts.ctypes.data, counts[1:].ctypes.data)
+        return status, float(out_t[0]), z_end, Y, int(counts[0]), int(counts[1])
+
+
+def _build(cc: list[str], target: Path) -> str | None:
+    """Compile the source into ``target`` (atomically); None on success, else the reason."""
+    fd, tmp = tempfile.mkstemp(dir=target.parent, prefix=f".{target.stem}.", suffix=".so")
+    os.close(fd)
+    try:
+        proc = subprocess.run([*cc, *FLAGS, str(SOURCE), "-o", tmp, "-lm"], capture_output=True, text=True,
+                              timeout=120)
+        if proc.returncode != 0:
+            return f"the C compiler failed: {(proc.stderr or proc.stdout).strip()[:300]}"
+        os.replace(tmp, target)
+        return None
+    except (OSError, subprocess.SubprocessError) as exc:
+        return f"the C compiler could not run: {exc}"
+    finally:
+        Path(tmp).unlink(missing_ok=True)
+
+
+def _load() -> CTaylor | str:
+    from ..codegen.numba_backend import cache_dir
+
+    cc = _compiler()
+    if cc is None:
+        return "no C compiler found (set $CC)"
+    text = SOURCE.read_bytes()
+    key = hashlib.sha256(b"\0".join([text, " ".join(cc + list(FLAGS)).encode(), platform.machine().encode(),
+                                     sys.platform.encode()])).hexdigest()[:24]
+    try:
+        target = cache_dir() / f"ctaylor_{key}.so"
+        if not target.exists():
+            reason = _build(cc, target)
+            if reason is not None:
+                return reason
+        return CTaylor(target)
+    except OSError as exc:
+        return f"the C interpreter could not be built or loaded: {exc}"
+
+
+def library() -> CTaylor | None:
+    """The C interpreter (built on first use, once per machine), or None (see :func:`unavailable_reason`)."""
+    if _disabled():
+        return None
+    key = os.environ.get("LAGRANGE_CACHE_DIR")
+    if key not in _LOADED:
+        _LOADED[key] = _load()
+    found = _LOADED[key]
+    return found if isinstance(found, CTaylor) else None
+
+
+def unavailable_reason() -> str | None:
+    """Why :func:`library` returns None (None when it does not)."""
+    if _disabled():
+        return f"{ENV_VAR}={os.environ.get(ENV_VAR)}"
+    library()
+    found = _LOADED[os.environ.get("LAGRANGE_CACHE_DIR")]
+    return found if isinstance(found, str) else None
