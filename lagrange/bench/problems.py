@@ -20,6 +20,7 @@ greenspan          Greenspan's tetrahedral top (rigid model, 5 DOF), example 1
 from __future__ import annotations
 
 import math
+import re
 from collections.abc import Callable
 from dataclasses import dataclass, field
 
@@ -235,10 +236,10 @@ def _double_pendulum(quick: bool) -> BenchProblem:
         long_steps=(0.02,))
 
 
-def _nlink(quick: bool) -> BenchProblem:
+def _nlink(quick: bool, n: int = 5) -> BenchProblem:
     return BenchProblem(
-        "nlink", "planar 5-link pendulum, q_i = 0.6(−1)^i/(i+1), t ∈ [0, 10]",
-        lambda: n_link_pendulum(5), {"g": 9.81}, _pendulum_initial(5), 10.0, pendulum_links=5, geometric=False,
+        "nlink" if n == 5 else f"nlink{n}", f"planar {n}-link pendulum, q_i = 0.6(−1)^i/(i+1), t ∈ [0, 10]",
+        lambda: n_link_pendulum(n), {"g": 9.81}, _pendulum_initial(n), 10.0, pendulum_links=n, geometric=False,
         notes="Sensitive dependence: errors grow ~1e5-fold over t = 10, so rtol is not the achieved accuracy. "
               "The geometric methods (which build in about a second here) are compared on the double pendulum, "
               "the top and Kepler, where fixed steps can reach the reference.")
@@ -301,11 +302,17 @@ PROBLEMS: dict[str, Callable[[bool], BenchProblem]] = {
 
 
 def get_problem(name: str, *, quick: bool = False) -> BenchProblem:
-    """The problem called ``name`` (see :data:`PROBLEMS`); ``quick`` shortens horizons and sweeps.
+    """The problem called ``name`` (see :data:`PROBLEMS`; also ``"nlink<N>"``, the planar N-link pendulum for
+    2 ≤ N ≤ 20, outside the default suite); ``quick`` shortens horizons and sweeps.
 
     >>> get_problem("kepler").t_end == 20 * math.pi
     True
+    >>> get_problem("nlink10").pendulum_links
+    10
     """
+    m = re.fullmatch(r"nlink(\d+)", name)
+    if m and 2 <= int(m.group(1)) <= 20:
+        return _nlink(quick, int(m.group(1)))
     if name not in PROBLEMS:
         raise SpecError(f"unknown benchmark problem {name!r}; choose from {', '.join(PROBLEMS)}")
     return PROBLEMS[name](quick)

@@ -55,7 +55,23 @@ def machine_info() -> dict:
     threads = {k: os.environ[k] for k in ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "NUMBA_NUM_THREADS")
                if k in os.environ}
     return {"cpu": _cpu_model(), "cores": os.cpu_count(), "os": f"{platform.system()} {platform.release()}",
-            "threads": threads, "versions": versions}
+            "threads": threads, "versions": versions, "c_compiler": _c_compiler()}
+
+
+def _c_compiler() -> str | None:
+    """The first line of ``--version`` of the compiler that builds the C Taylor interpreter, or None."""
+    import subprocess
+
+    from ..integrate.c_taylor import _compiler
+
+    cc = _compiler()
+    if cc is None:
+        return None
+    try:
+        out = subprocess.run([*cc, "--version"], capture_output=True, text=True, timeout=30).stdout
+    except (OSError, subprocess.SubprocessError):
+        return None
+    return (out.strip().splitlines() or [None])[0]
 
 
 def _f(x):
@@ -138,7 +154,9 @@ def _machine_lines(m: dict) -> list[str]:
     ver = ", ".join(f"{k} {val}" for k, val in v.items() if val) + "".join(
         f"; {k} not installed" for k, val in v.items() if not val)
     thr = ", ".join(f"{k}={val}" for k, val in m.get("threads", {}).items()) or "not set"
-    return [f"Machine: {m['cpu']}, {m['cores']} logical cores, {m['os']}. Versions: {ver}. Thread settings: {thr}."]
+    cc = f" C compiler (the Taylor interpreter): {m['c_compiler']}." if m.get("c_compiler") else ""
+    return [f"Machine: {m['cpu']}, {m['cores']} logical cores, {m['os']}. Versions: {ver}. Thread settings: {thr}."
+            + cc]
 
 
 def _problem_table(problem: dict, kinds: tuple, setting_label) -> list[str]:

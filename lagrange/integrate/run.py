@@ -318,9 +318,20 @@ class GimbalLockWarning(UserWarning):
 
 
 def _gimbal_hint(system) -> str:
+    """The gimbal-lock hint when a body of ``system`` has Euler angles, else ""; remembered per bodies tuple."""
+    seen = getattr(system, "__dict__", {}).get("_gimbal_hint")
+    if seen is not None and seen[0] is system.bodies:
+        return seen[1]
+    hint = _euler_hint(system.bodies)
+    if hasattr(system, "__dict__"):
+        system.__dict__["_gimbal_hint"] = (system.bodies, hint)
+    return hint
+
+
+def _euler_hint(bodies) -> str:
     from ..model.rotations import EulerAngles
 
-    if any(isinstance(getattr(b, "orientation", None), EulerAngles) for b in system.bodies):
+    if any(isinstance(getattr(b, "orientation", None), EulerAngles) for b in bodies):
         return (" Gimbal lock: Wells' Euler angles are singular at θ = 0 or π (only ψ + φ is defined there). "
                 "Use RigidBody(..., orientation=Quaternion(q0, q1, q2, q3)) — it is regular everywhere (a "
                 "sleeping top) — or tilt the reference axes.")
@@ -459,7 +470,7 @@ def simulate(
     """
     from .switching import run_switched, switching_functions
 
-    if np.ndim(t_span) == 0:
+    if not isinstance(t_span, tuple | list) and np.ndim(t_span) == 0:
         t_span = (0.0, float(t_span))
     t0, t1 = float(t_span[0]), float(t_span[1])
     if not (math.isfinite(t0) and math.isfinite(t1)) or t1 == t0:

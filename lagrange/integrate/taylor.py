@@ -43,6 +43,7 @@ from .compiled import MAX_STEPS, LoopStatus, check_output_times, first_class, ke
 
 __all__ = ["taylor_order", "tape_of", "compiled_series", "interpreter", "integrate_taylor"]
 
+_EPS = float(np.finfo(float).eps)
 _TAPES: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
 _SERIES: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
 
@@ -124,7 +125,7 @@ def integrate_taylor(model: NumericModel, t_span, y0, t_eval, *, rtol: float, at
         raise ValueError(f"the Taylor method needs atol > 0 (atol/rtol is the absolute-criterion scale), got {atol}")
     if not max_step > 0:
         raise ValueError("max_step must be positive")
-    rtol = max(rtol, float(np.finfo(float).eps))
+    rtol = max(rtol, _EPS)
     t_eval = check_output_times(t_eval, t0, t1)
     y0 = np.asarray(y0, dtype=float)
     z0 = np.ascontiguousarray(y0 if tape.nz == y0.size else np.append(y0, 0.0))
