@@ -8,6 +8,7 @@ Generated code sees the state as ``y0 .. y{2n-1}`` (positions then velocities), 
 
 from __future__ import annotations
 
+import weakref
 from dataclasses import dataclass
 
 import sympy as sp
@@ -63,13 +64,26 @@ class FusedExpressions:
         return len(self.constraint_rhs)
 
 
+_FUSED: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
+
+
 def fuse(eqs: Equations, *, extra: tuple = (), constraint_rhs=None) -> tuple[FusedExpressions, tuple]:
     """Run one CSE over M's upper triangle, f, the constraint blocks A and c (``constraint_rhs``
     overrides c, e.g. with Baumgarte terms) and ``extra`` expressions.
 
     Floats are introduced here only: exact rationals stay exact until printed.
-    Returns the fused expressions and the CSE'd ``extra`` expressions.
+    Returns the fused expressions and the CSE'd ``extra`` expressions (treat both as read-only: the result
+    is remembered per equations and arguments, so the code generator and the Taylor tape of one model share
+    one CSE — 0.14 s of a 10-link pendulum's first result).
     """
+    key = (tuple(extra), None if constraint_rhs is None else tuple(constraint_rhs))
+    memo = _FUSED.setdefault(eqs, {})
+    if key not in memo:
+        memo[key] = _fuse(eqs, extra, constraint_rhs)
+    return memo[key]
+
+
+def _fuse(eqs: Equations, extra: tuple, constraint_rhs) -> tuple[FusedExpressions, tuple]:
     n = eqs.n
     ren = rename_map(eqs)
     A = eqs.constraint_matrix
