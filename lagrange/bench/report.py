@@ -242,8 +242,9 @@ def render_markdown(data: dict, *, title: str = "Speed against error: work-preci
     """The full report: machine, method, a summary across problems, then every problem's tables."""
     s = data.get("settings", {})
     lines = [f"# {title}", "", *_machine_lines(data["machine"]), "",
-             f"Settings: {s.get('mode', 'full')} run; wall time = median of {s.get('repeats', 3)} run(s) after a "
-             "warm-up (7 for runs under 5 ms; the warm-up alone for runs over 0.5 s), `time.perf_counter`; "
+             f"Settings: {s.get('mode', 'full')} run; wall time = median of {s.get('repeats', 3)} sample(s) after "
+             "a warm-up (7 for runs under 5 ms; the warm-up alone for runs over the time budget; a run under 2 ms "
+             "is sampled as the mean of a batch lasting about 2 ms, as `timeit` does), `time.perf_counter`; "
              "error = max-norm of the state error at the measured times against the reference; "
              "atol = rtol (× the problem's scale). "
              "Setup (code generation, JIT, heyoka's LLVM compile, building the Hamiltonian model) is not in the "

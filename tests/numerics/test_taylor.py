@@ -190,13 +190,31 @@ def test_energy_bounded_over_many_periods():
     assert np.max(np.abs(E / E[0] - 1)) < 1e-12
 
 
-def test_auto_picks_taylor_only_at_tight_tolerance():
+def test_auto_picks_taylor_at_tight_tolerance_or_when_the_c_interpreter_runs_a_python_model(monkeypatch):
+    """numba models: Taylor only at rtol ≤ 1e-11 (their compiled DOP853 loop is as fast at loose tolerance);
+    python models: Taylor at any tolerance when the C interpreter is here (scipy's loop steps in Python), but
+    not with events, and not on the numba interpreter (its first call costs 0.2 s)."""
+    from lagrange.integrate import c_taylor
+
     s = n_link_pendulum(2)
     ic = {"q1": 0.6, "q2": -0.3, "q1_dot": 0.0, "q2_dot": 0.0}
-    tight = s.simulate(1, ic, {"g": 9.81}, method="auto", rtol=1e-12, atol=1e-12, n_points=3)
+    tight = s.simulate(1, ic, {"g": 9.81}, method="auto", rtol=1e-12, atol=1e-12, n_points=3, backend="numba")
     assert tight.method.startswith("taylor") and "auto: no dissipation" in tight.method
-    default = s.simulate(1, ic, {"g": 9.81}, method="auto", n_points=3)
+    default = s.simulate(1, ic, {"g": 9.81}, method="auto", n_points=3, backend="numba")
     assert default.method.startswith("DOP853")
+    python = s.simulate(1, ic, {"g": 9.81}, method="auto", n_points=3)
+    ref = s.simulate(1, ic, {"g": 9.81}, rtol=1e-12, atol=1e-12, n_points=3)
+    assert np.max(np.abs(python.y - ref.y)) < 1e-7
+    if c_taylor.library() is not None:
+        assert python.method.startswith("taylor (interpreted tape, c; auto: no dissipation, non-stiff, python")
+
+        def event(t_, y):
+            return y[0]
+
+        with_events = s.simulate(1, ic, {"g": 9.81}, method="auto", n_points=3, events=[event])
+        assert with_events.method.startswith("DOP853")
+    monkeypatch.setenv("LAGRANGE_C_TAYLOR", "0")
+    assert s.simulate(1, ic, {"g": 9.81}, method="auto", n_points=3).method.startswith("DOP853")
 
 
 def test_non_analytic_equations_are_refused_by_name():
