@@ -323,8 +323,9 @@ def readme_section(data: dict) -> str:
         out += ["", "Time to first result (derive + generate/compile + integrate at rtol 1e-10, fresh process after "
                 "its imports, empty caches unless stated; heyoka's excludes forming T − V, which lagrange does for "
                 "it; cold columns for every route are in workprecision.md):", "",
-                "| problem | lagrange python (DOP853) | same, re-run | lagrange taylor (kernel cached, new model) "
-                "| taylor, re-run | lagrange compiled loop (loops cached, new model) | plain sympy | heyoka.py "
+                "| problem | lagrange python (DOP853) | same, re-run "
+                "| lagrange taylor (interpreter built earlier, new model) | taylor, re-run "
+                "| lagrange compiled loop (loops cached, new model) | plain sympy | heyoka.py "
                 "| heyoka.py, re-run (its on-disk cache) |",
                 "|---|---|---|---|---|---|---|---|---|", *ttfr]
     return "\n".join(out) + "\n"
