@@ -78,6 +78,9 @@ class CTaylor:
                           tape.slot_t, t0, t1, z0.ctypes.data, p.ctypes.data, floor, order, max_step,
                           t_eval.ctypes.data, t_eval.size, max_steps, Y.ctypes.data, out_t.ctypes.data,
                           z_end.ctypes.data, counts.ctypes.data, counts[1:].ctypes.data)
+        if status == 5:
+            raise MemoryError(f"the C Taylor interpreter could not allocate its work arrays ({tape.n_slots} slots "
+                              f"× order {order})")
         return status, float(out_t[0]), z_end, Y, int(counts[0]), int(counts[1])
 
 
@@ -98,22 +101,39 @@ def _build(cc: list[str], target: Path) -> str | None:
         Path(tmp).unlink(missing_ok=True)
 
 
-def _load() -> CTaylor | str:
+def library_path(cc: list[str]) -> Path:
+    """Where the library built by ``cc`` lives: the cache directory, named by a hash of the source, the
+    compiler command, the flags and the platform."""
     from ..codegen.numba_backend import cache_dir
 
+    key = hashlib.sha256(b"\0".join([SOURCE.read_bytes(), " ".join(cc + list(FLAGS)).encode(),
+                                     platform.machine().encode(), sys.platform.encode()])).hexdigest()[:24]
+    return cache_dir() / f"ctaylor_{key}.so"
+
+
+def _open(cc: list[str], target: Path) -> CTaylor | str:
+    """The library at ``target``, built first when missing; or the reason it is unavailable."""
+    if not target.exists():
+        reason = _build(cc, target)
+        if reason is not None:
+            return reason
+    try:
+        return CTaylor(target)
+    except (OSError, AttributeError) as exc:  # not a loadable library, or not ours
+        return f"the C interpreter was built but does not load: {exc}"
+
+
+def _load() -> CTaylor | str:
     cc = _compiler()
     if cc is None:
         return "no C compiler found (set $CC)"
-    text = SOURCE.read_bytes()
-    key = hashlib.sha256(b"\0".join([text, " ".join(cc + list(FLAGS)).encode(), platform.machine().encode(),
-                                     sys.platform.encode()])).hexdigest()[:24]
     try:
-        target = cache_dir() / f"ctaylor_{key}.so"
-        if not target.exists():
-            reason = _build(cc, target)
-            if reason is not None:
-                return reason
-        return CTaylor(target)
+        target = library_path(cc)
+        found = _open(cc, target)
+        if isinstance(found, str) and target.exists():  # a damaged library (a crash mid-copy): rebuilt once
+            target.unlink(missing_ok=True)
+            found = _open(cc, target)
+        return found
     except OSError as exc:
         return f"the C interpreter could not be built or loaded: {exc}"
 

@@ -345,3 +345,21 @@ def test_simulate_says_which_interpreter_ran_and_falls_back_without_a_compiler(m
         assert sol.y[-1, 0] == pytest.approx(math.cos(1.0), abs=1e-8)
     monkeypatch.setenv("LAGRANGE_C_TAYLOR", "0")
     assert c_taylor.library() is None and "LAGRANGE_C_TAYLOR=0" in c_taylor.unavailable_reason()
+
+
+def test_a_damaged_c_library_is_rebuilt(monkeypatch, tmp_path):
+    """A library file that does not load (truncated by a crash, say) is deleted and built again, once."""
+    import os
+
+    from lagrange.integrate import c_taylor
+
+    _c_or_skip()
+    monkeypatch.setenv("LAGRANGE_CACHE_DIR", str(tmp_path))  # a cache of its own (the numba kernels stay put)
+    monkeypatch.delitem(c_taylor._LOADED, str(tmp_path), raising=False)
+    path = c_taylor.library_path(c_taylor._compiler())
+    path.write_bytes(b"not a shared library")  # damaged before this process maps it
+    rebuilt = c_taylor.library()
+    assert rebuilt is not None and rebuilt.path == path and path.read_bytes()[:4] == b"\x7fELF"
+    assert c_taylor.unavailable_reason() is None
+    c_taylor._LOADED.pop(str(tmp_path))
+    assert sorted(os.listdir(tmp_path)) == [path.name]  # no temporary files left
