@@ -1,13 +1,14 @@
 """Time to first result against the size of the system: planar N-link pendulums, N = 2, 5, 8, 10.
 
-Each route runs in a fresh process with empty caches (:mod:`lagrange.bench.first_result`), side by side in one
-run: lagrange's python backend with DOP853, lagrange's Taylor method with the tape interpreted in C (built by
-an earlier process, as after a first use on the machine; the numba build of the interpreter where there is no
-C compiler), and heyoka.py (``heyoka.lagrangian`` + ``taylor_adaptive``, cold LLVM compile, ``compact_mode``
-above 100 operations). All at rtol = atol = 1e-10 over t ∈ [0, 10]; the error is the max-norm of the final
-state against DOP853 at rtol 1e-13. Writes ``results/first_result_scaling.md``. Run::
+Each route runs in a fresh process with empty caches (:mod:`lagrange.bench.first_result`; three processes, median
+by total, when a route takes under a second), side by side in one run: lagrange's python backend with DOP853,
+lagrange's Taylor method with the tape interpreted in C (built by an earlier process, as after a first use on the
+machine; the numba build of the interpreter where there is no C compiler), and heyoka.py (``heyoka.lagrangian`` +
+``taylor_adaptive``, cold LLVM compile, ``compact_mode`` above 100 operations). All at rtol = atol = 1e-10 over t
+∈ [0, 10]; the error is the max-norm of the final state against DOP853 at rtol 1e-13. Writes
+``results/first_result_scaling.md``. Run::
 
-    python benchmarks/first_result_scaling.py          # about 2 minutes on 2 cores
+    python benchmarks/first_result_scaling.py          # about 5 minutes on 2 cores
 """
 
 from __future__ import annotations

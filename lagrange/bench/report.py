@@ -224,7 +224,8 @@ def _first_result_table(problem: dict, imports: dict | None = None) -> list[str]
     if not problem["first_result"]:
         return []
     out = ["Time to first result (fresh process, empty caches; DOP853/Taylor at rtol 1e-10; heyoka's derive is "
-           "heyoka.lagrangian on the T − V lagrange formed, whose cost is not counted)." + _imports_text(imports),
+           "heyoka.lagrangian on the T − V lagrange formed, whose cost is not counted; a route under 1 s is the "
+           "median, by total, of three fresh processes)." + _imports_text(imports),
            "",
            "| route | derive | compile / JIT | integrate | total | error |", "|---|---|---|---|---|---|"]
     for f in problem["first_result"]:
@@ -321,8 +322,9 @@ def readme_section(data: dict) -> str:
            "| heyoka.py (best ÷ heyoka) |", "|---|---|---|---|---|", *rows]
     if ttfr:
         out += ["", "Time to first result (derive + generate/compile + integrate at rtol 1e-10, fresh process after "
-                "its imports, empty caches unless stated; heyoka's excludes forming T − V, which lagrange does for "
-                "it; cold columns for every route are in workprecision.md):", "",
+                "its imports, empty caches unless stated, median of three processes under 1 s; heyoka's excludes "
+                "forming T − V, which lagrange does for it; cold columns for every route are in "
+                "workprecision.md):", "",
                 "| problem | lagrange python (DOP853) | same, re-run "
                 "| lagrange taylor (interpreter built earlier, new model) | taylor, re-run "
                 "| lagrange compiled loop (loops cached, new model) | plain sympy | heyoka.py "
