@@ -244,8 +244,10 @@ def render_markdown(data: dict, *, title: str = "Speed against error: work-preci
     s = data.get("settings", {})
     lines = [f"# {title}", "", *_machine_lines(data["machine"]), "",
              f"Settings: {s.get('mode', 'full')} run; wall time = median of {s.get('repeats', 3)} sample(s) after "
-             "a warm-up (7 for runs under 5 ms; the warm-up alone for runs over the time budget; a run under 2 ms "
-             "is sampled as the mean of a batch lasting about 2 ms, as `timeit` does), `time.perf_counter`; "
+             "a warm-up — for runs under 5 ms the fastest of 7 samples, as `timeit` advises (bursts of other work "
+             "slow sub-millisecond runs by up to 2× on this shared machine), a sample of a run under 2 ms being "
+             "the mean of a batch lasting about 2 ms; the warm-up alone for runs over the time budget; "
+             "`time.perf_counter`; "
              "error = max-norm of the state error at the measured times against the reference; "
              "atol = rtol (× the problem's scale). "
              "Setup (code generation, JIT, heyoka's LLVM compile, building the Hamiltonian model) is not in the "

@@ -136,11 +136,12 @@ def choose_method(eqs, params=None, t_span=(0.0, 1.0), y0=None, rtol: float | No
                          f"(stiffness ratio {st[1]:.3g}); Radau with the generated Jacobian")
     if eqs.power_function != 0 or eqs.rayleigh != 0:
         return "LSODA", "dissipation present (P or rayleigh): possibly stiff later, LSODA switches to BDF if so"
-    if not events and _taylor_ready(eqs):
+    python_model = backend in ("python", "reference")
+    if not events and (python_model or (rtol is not None and rtol <= 1e-11)) and _taylor_ready(eqs):
         from .taylor import interpreter, taylor_order
 
         order = taylor_order(rtol if rtol is not None else 1e-9)
-        if backend in ("python", "reference") and interpreter() == "c":
+        if python_model and interpreter() == "c":
             return "taylor", (f"no dissipation, non-stiff, {backend} backend: the Taylor method (order {order}) "
                               "steps in the compiled tape interpreter, scipy's DOP853 in Python")
         if rtol is not None and rtol <= 1e-11:
