@@ -97,22 +97,18 @@ def routes_for(problem, *, heyoka: bool) -> list[str]:
     """The routes that apply to ``problem`` (numba ones only when numba is installed)."""
     import importlib.util
 
-    from ..errors import BackendError
-    from ..integrate.taylor import interpreter
+    from ..integrate.taylor import available_interpreter
 
     out = ["python", "python_rerun"] + ([] if problem.conservative else ["python_auto"])
     has_numba = importlib.util.find_spec("numba") is not None
-    try:
-        tape_runs = interpreter() is not None
-    except BackendError:
-        tape_runs = False
+    engine = available_interpreter()
     if has_numba:
         out += ["numba"]
         if problem.name != "stick_slip":  # no friction switches in the compiled loop
             out += ["compiled", "compiled_primed"]
-    if tape_runs and problem.name != "stick_slip":  # no sign() in a Taylor series
+    if engine and problem.name != "stick_slip":  # no sign() in a Taylor series
         out += ["taylor", "taylor_primed", "taylor_rerun"]
-        if has_numba and interpreter() == "c":
+        if has_numba and engine == "c":
             out += ["taylor_numba_primed"]
     if problem.pendulum_links:
         out.append("sympy")

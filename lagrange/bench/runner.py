@@ -116,17 +116,6 @@ def _numba_ok() -> bool:
     return importlib.util.find_spec("numba") is not None
 
 
-def _tape_interpreter() -> str | None:
-    """Who interprets Taylor tapes here (``"c"`` or ``"numba"``), or None."""
-    from ..errors import BackendError
-    from ..integrate.taylor import interpreter
-
-    try:
-        return interpreter()
-    except BackendError:
-        return None
-
-
 def method_specs(problem: BenchProblem, *, quick: bool = False, heyoka: bool = True) -> list[MethodSpec]:
     """The methods compared on ``problem``: scipy methods × backends through ``simulate`` (numba with
     ``loop="scipy"``), the compiled loop (DOP853, RK45), ``method="auto"`` on the stiff problem, the
@@ -142,7 +131,9 @@ def method_specs(problem: BenchProblem, *, quick: bool = False, heyoka: bool = T
         specs += [MethodSpec(f"{m} numba scipy loop", method=m, backend="numba", loop="scipy") for m in scipy_methods]
         specs += [MethodSpec(f"{m} numba compiled loop", method=m, backend="numba", loop="compiled")
                   for m in ("DOP853", "RK45")]
-    engine = _tape_interpreter()
+    from ..integrate.taylor import available_interpreter
+
+    engine = available_interpreter()
     if not friction and engine:  # dry friction (sign) is not analytic: no Taylor series
         specs.append(MethodSpec(f"taylor python (tape interpreted {'in C' if engine == 'c' else 'by numba'})",
                                 method="taylor"))

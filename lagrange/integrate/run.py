@@ -100,12 +100,9 @@ def _taylor_ready(eqs) -> bool:
     """Whether ``method="taylor"`` can run ``eqs`` here (a C compiler or numba, analytic unconstrained
     equations)."""
     from ..codegen.tape import TapeError
-    from ..errors import BackendError
-    from .taylor import interpreter, tape_of
+    from .taylor import available_interpreter, tape_of
 
-    try:
-        interpreter()
-    except BackendError:
+    if available_interpreter() is None:
         return False
     try:
         tape_of(eqs)

@@ -41,7 +41,8 @@ from ..errors import BackendError
 from ..results.trajectory import Trajectory
 from .compiled import MAX_STEPS, LoopStatus, check_output_times, first_class, kernel, stopped_error
 
-__all__ = ["taylor_order", "tape_of", "compiled_series", "interpreter", "integrate_taylor"]
+__all__ = ["taylor_order", "tape_of", "compiled_series", "interpreter", "available_interpreter",
+           "integrate_taylor"]
 
 _EPS = float(np.finfo(float).eps)
 _TAPES: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
@@ -97,6 +98,14 @@ def interpreter(engine: str = "auto") -> str:
         return "numba"
     raise BackendError("method='taylor' needs a C compiler or numba (`pip install lagrange[fast]`); C: "
                        f"{c_taylor.unavailable_reason()}")
+
+
+def available_interpreter() -> str | None:
+    """:func:`interpreter` (``"c"`` or ``"numba"``), or None when neither can run a tape here."""
+    try:
+        return interpreter()
+    except BackendError:
+        return None
 
 
 def integrate_taylor(model: NumericModel, t_span, y0, t_eval, *, rtol: float, atol: float,
