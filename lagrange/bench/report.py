@@ -62,9 +62,9 @@ def _c_compiler() -> str | None:
     """The first line of ``--version`` of the compiler that builds the C Taylor interpreter, or None."""
     import subprocess
 
-    from ..integrate.c_taylor import _compiler
+    from ..integrate.c_taylor import compiler
 
-    cc = _compiler()
+    cc = compiler()
     if cc is None:
         return None
     try:

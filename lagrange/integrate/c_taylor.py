@@ -30,7 +30,7 @@ from pathlib import Path
 
 import numpy as np
 
-__all__ = ["CTaylor", "library", "unavailable_reason", "ENV_VAR"]
+__all__ = ["CTaylor", "library", "library_path", "compiler", "unavailable_reason", "ENV_VAR"]
 
 #: set to 0 / off / false / no to never build or load the C interpreter
 ENV_VAR = "LAGRANGE_C_TAYLOR"
@@ -48,7 +48,9 @@ def _disabled() -> bool:
     return os.environ.get(ENV_VAR, "1").strip().lower() in ("0", "off", "false", "no")
 
 
-def _compiler() -> list[str] | None:
+def compiler() -> list[str] | None:
+    """The command that builds the library: ``$CC``, else Python's configured compiler, else ``cc`` (split into
+    argv), or None when its program is not on PATH."""
     cc = os.environ.get("CC") or sysconfig.get_config_var("CC") or "cc"
     argv = shlex.split(cc)
     return argv if argv and shutil.which(argv[0]) else None
@@ -138,7 +140,7 @@ def _open(cc: list[str], target: Path) -> CTaylor | str:
 
 
 def _load() -> CTaylor | str:
-    cc = _compiler()
+    cc = compiler()
     if cc is None:
         return "no C compiler found (set $CC)"
     try:

@@ -356,7 +356,7 @@ def test_a_damaged_c_library_is_rebuilt(monkeypatch, tmp_path):
     _c_or_skip()
     monkeypatch.setenv("LAGRANGE_CACHE_DIR", str(tmp_path))  # a cache of its own (the numba kernels stay put)
     monkeypatch.delitem(c_taylor._LOADED, str(tmp_path), raising=False)
-    path = c_taylor.library_path(c_taylor._compiler())
+    path = c_taylor.library_path(c_taylor.compiler())
     path.write_bytes(b"not a shared library")  # damaged before this process maps it
     rebuilt = c_taylor.library()
     assert rebuilt is not None and rebuilt.path == path and path.read_bytes()[:4] == b"\x7fELF"
