@@ -9,6 +9,7 @@ from .analysis.small_oscillations import characteristic_roots, equilibria, linea
 from .analysis.steady_motion import oscillations_about_steady_motion, routhian, steady_motion_conditions
 from .analysis.variational import action, euler_lagrange, variational_integrate
 from .conventions import t
+from .derive.euler import support_loads
 from .errors import (
     BackendError,
     CollisionError,
@@ -17,16 +18,19 @@ from .errors import (
     InitialConditionError,
     IntegrationError,
     LagrangeError,
+    LagrangeWarning,
     ParameterError,
     SingularMassMatrixError,
     SpecError,
     SymbolicTimeoutError,
+    UnusedParameterWarning,
 )
 from .gauss.check import GaussCheck, check_gauss
 from .model.bodies import Force, Particle
 from .model.constraints import Differential, Holonomic, IntegrableConstraintWarning, Nonholonomic, Rough
-from .model.coordinates import coordinates, delta, parameters
+from .model.coordinates import coordinates, delta, parameters, to_functions, to_symbols, unknowns
 from .model.eliminate import eliminate
+from .model.frames import EarthFrame, Frame
 from .model.inertia import Inertia
 from .model.rigid_body import RigidBody, Torque
 from .model.rotations import EulerAngles, Quaternion, rot_x, rot_y, rot_z
@@ -89,4 +93,12 @@ __all__ = [
     "check_gauss",
     "GaussCheck",
     "__version__",
+    "unknowns",
+    "to_symbols",
+    "to_functions",
+    "Frame",
+    "EarthFrame",
+    "support_loads",
+    "LagrangeWarning",
+    "UnusedParameterWarning",
 ]

@@ -97,6 +97,15 @@ class SweepError(LagrangeError, ValueError):
     dependency of sweeps is missing (the message names the extra to install)."""
 
 
+class LagrangeWarning(UserWarning):
+    """Base class of the warnings lagrange issues on purpose."""
+
+
+class UnusedParameterWarning(LagrangeWarning):
+    """Values were given for declared parameters that cancel out of the equations of motion (they are
+    ignored; the warning names them)."""
+
+
 class SymbolicTimeoutError(LagrangeError, TimeoutError):
     """A sympy computation (solve, simplify) ran out of time in every attempt; see
     :mod:`lagrange.simplification` (``$LAGRANGE_SYMPY_SECONDS`` sets the limit per attempt)."""
@@ -115,4 +124,6 @@ __all__ = [
     "InconsistentConstraintError",
     "CollisionError",
     "SymbolicTimeoutError",
+    "LagrangeWarning",
+    "UnusedParameterWarning",
 ]

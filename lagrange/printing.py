@@ -67,8 +67,9 @@ def _header(system) -> str:
     if not cons:
         return f"{name}: {n} degree(s) of freedom ({coords})"
     hol = sum(1 for c in cons if c.kind == "holonomic")
+    dof = system.dof  # the same counts as repr(system)
     return (f"{name}: {n} coordinates ({coords}), {len(cons)} constraint(s) ({hol} holonomic): "
-            f"{n - hol} degree(s) of freedom in configuration, {n - len(cons)} in velocity")
+            f"{dof.configuration} degree(s) of freedom in configuration, {dof.velocity} in velocity")
 
 
 def format_equations(system) -> str:

@@ -28,6 +28,7 @@ import sympy as sp
 
 from ..codegen.numeric import bind_parameters
 from ..conventions import t
+from ..conventions import t as _t
 from ..errors import IntegrationError, LagrangeError
 from ..simplification import simplify
 
@@ -47,10 +48,90 @@ def euler_lagrange(F, functions: Sequence, variable) -> list[sp.Eq]:
     return out
 
 
-def action(trajectory) -> float:
-    """``∫ L dt`` along a simulated trajectory (Simpson's rule on its output times)."""
-    d = trajectory.diagnostics
-    return float(scipy.integrate.simpson(d["T"] - d["V"], x=trajectory.t))
+def action(path, system=None, params: Mapping | None = None, *, t=None) -> float:
+    r"""The action :math:`S = \int_{t_0}^{t_1} L(q, \dot q, t)\,dt`, ``L = T − V``, along a path.
+
+    Parameters
+    ----------
+    path : one of
+        - a :class:`~lagrange.results.trajectory.Trajectory` (``system``, ``params`` and ``t`` not needed):
+          Simpson's rule on its output times;
+        - a mapping ``{q: expression of t}`` (sympy, every coordinate): exact velocities, adaptive quadrature
+          (``scipy.integrate.quad``) over ``t = (t0, t1)``;
+        - a mapping ``{q: callable}`` or one callable ``path(t) -> q`` (shape (n,)): velocities by a
+          fourth-order central difference (step ``1e-3 (t1 − t0)``), quadrature over ``t = (t0, t1)``;
+        - an array sampled on the grid ``t`` (shape (n_times,)): shape (n_times, n) for q (velocities by
+          ``numpy.gradient``, second order) or (n_times, 2n) for ``[q, q̇]``; Simpson's rule.
+    system : :class:`~lagrange.System` — its ``T − V`` (P, Rayleigh and forces are not part of L)
+    params : parameter values (keys: symbols or names)
+    t : ``(t0, t1)`` or the sample times of an array path
+
+    Raises
+    ------
+    LagrangeError
+        A coordinate is missing from a mapping, the shapes do not match, ``system``/``t`` are missing, or
+        the system has constraints (the action of the free L would ignore them).
+
+    Examples
+    --------
+    >>> import lagrange as lg
+    >>> x = lg.coordinates("x"); m = lg.parameters("m")
+    >>> free = lg.System([x], T=m * x.diff(lg.t) ** 2 / 2)
+    >>> round(action({x: 3 * lg.t}, free, {"m": 2}, t=(0, 1)), 12)  # m v² T / 2
+    9.0
+    """
+    if hasattr(path, "diagnostics") and hasattr(path, "t"):
+        d = path.diagnostics
+        return float(scipy.integrate.simpson(d["T"] - d["V"], x=path.t))
+    if system is None or t is None:
+        raise LagrangeError("action of a path that is not a Trajectory needs the system and t")
+    eqs = system.derived
+    if eqs.m:
+        raise LagrangeError("action of a constrained system: L = T − V alone ignores the constraints; "
+                            "eliminate the superfluous coordinates first (lagrange.eliminate)")
+    n = eqs.n
+    pvals = dict(zip(eqs.parameters, bind_parameters(eqs, system.bindable(params))))
+    Lf = sp.lambdify([list(eqs.q), list(eqs.qd), _t], (eqs.kinetic - eqs.potential).subs(pvals), "numpy")
+    if isinstance(path, Mapping):
+        missing = [str(c) for c in eqs.coordinates if c not in path]
+        if missing:
+            raise LagrangeError(f"the path must give every coordinate; missing {', '.join(missing)}")
+        funcs = [path[c] for c in eqs.coordinates]
+        if all(isinstance(f, sp.Basic) or isinstance(f, int | float) for f in funcs):
+            qs = sp.lambdify(_t, [sp.sympify(f) for f in funcs], "numpy")
+            vs = sp.lambdify(_t, [sp.diff(f, _t) for f in funcs], "numpy")
+            return _quad(lambda s: Lf(qs(s), vs(s), s), t)
+        path = _stack([f if callable(f) else (lambda s, c=float(f): c) for f in funcs])
+    if callable(path):
+        t0, t1 = map(float, t)
+        h = 1e-3 * (t1 - t0)
+
+        def q_of(s):
+            return np.asarray(path(s), dtype=float).reshape(n)
+
+        def v_of(s):  # fourth-order central difference
+            return (8 * (q_of(s + h) - q_of(s - h)) - (q_of(s + 2 * h) - q_of(s - 2 * h))) / (12 * h)
+
+        return _quad(lambda s: Lf(q_of(s), v_of(s), s), (t0, t1))
+    Y = np.asarray(path, dtype=float)
+    times = np.asarray(t, dtype=float)
+    if Y.ndim != 2 or Y.shape[0] != times.shape[0] or Y.shape[1] not in (n, 2 * n):
+        raise LagrangeError(f"a sampled path has shape (n_times, {n}) or (n_times, {2 * n}) matching t "
+                            f"(n_times = {times.shape[0]}); got {Y.shape}")
+    Q = Y[:, :n]
+    V = Y[:, n:] if Y.shape[1] == 2 * n else np.gradient(Q, times, axis=0, edge_order=2)
+    values = np.array([Lf(Q[i], V[i], times[i]) for i in range(len(times))], dtype=float)
+    return float(scipy.integrate.simpson(values, x=times))
+
+
+def _stack(funcs):
+    return lambda s: np.array([f(s) for f in funcs], dtype=float)
+
+
+def _quad(f, span) -> float:
+    t0, t1 = map(float, span)
+    value, _ = scipy.integrate.quad(lambda s: float(f(s)), t0, t1, epsabs=1e-13, epsrel=1e-12, limit=200)
+    return float(value)
 
 
 @dataclass(frozen=True)

@@ -36,20 +36,50 @@ def projected_residuals(body, coordinates, torque=(0, 0, 0)) -> list:
     return [sp.expand((res.T * w.diff(q.diff(t)))[0, 0]) for q in coordinates]
 
 
-def support_loads(body, applied_force=(0, 0, 0), applied_torque=(0, 0, 0)) -> tuple[sp.Matrix, sp.Matrix]:
-    """Force (inertial components) and torque about the centre of mass (body axes) that the supports
-    exert: ``F = M a_cm − F_applied`` (Wells 9.2) and ``τ = J_c ω̇ + ω × J_c ω − τ_applied`` with J_c the
-    central inertia (parallel-axis shift from O).
+_FRAMES = ("inertial", "body")
+
+
+def support_loads(body, applied_force=(0, 0, 0), applied_torque=(0, 0, 0), *,
+                  frame: str = "inertial") -> tuple[sp.Matrix, sp.Matrix]:
+    r"""Force and torque about the centre of mass that the supports exert, both in one frame.
+
+    .. math:: \mathbf F = M\mathbf a_{cm} - \mathbf F_{applied}\ \text{(Wells 9.2)},\qquad
+              \boldsymbol\tau = J_c\dot{\boldsymbol\omega} + \boldsymbol\omega\times J_c\boldsymbol\omega
+              - \boldsymbol\tau_{applied}
+
+    with ``J_c`` the central inertia (parallel-axis shift from O) and ω along the body axes.
+
+    Parameters
+    ----------
+    body : :class:`~lagrange.RigidBody`
+    applied_force, applied_torque : 3-vectors in the components of ``frame`` (the torque about the centre of
+        mass)
+    frame : ``"inertial"`` (default: components along the inertial axes) or ``"body"`` (along the body axes,
+        ``R^T`` times the inertial components, R the body's orientation)
+
+    Returns
+    -------
+    (F, tau) : two 3×1 Matrices, both in the components of ``frame``.
 
     The torque about the centre of mass excludes the support force's own moment; add ``r × F`` for a
-    support at body point r.
+    support at body point r (r and F in the same frame).
     """
+    if frame not in _FRAMES:
+        raise ValueError(f"frame must be 'inertial' or 'body', got {frame!r}")
     M = body.mass
-    a_cm = body.centre_of_mass.diff(t, 2)
-    F = M * a_cm - as_vector(applied_force, "applied force")
+    R = body.R
+    Fa = as_vector(applied_force, "applied force")
+    Ta = as_vector(applied_torque, "applied torque")
+    if frame == "body":
+        Fa = R * Fa
+    else:
+        Ta = R.T * Ta
+    F = M * body.centre_of_mass.diff(t, 2) - Fa  # inertial components
     c = body.com
     shift = M * ((c.T * c)[0, 0] * sp.eye(3) - c * c.T)
     Jc = body.inertia - shift
     w = body.angular_velocity
-    tau = Jc * w.diff(t) + w.cross(Jc * w) - as_vector(applied_torque, "applied torque")
-    return F, tau
+    tau = Jc * w.diff(t) + w.cross(Jc * w) - Ta  # body axes
+    if frame == "body":
+        return R.T * F, tau
+    return F, R * tau

@@ -486,6 +486,8 @@ def simulate(
         raise TypeError(f"friction must be 'events' or 'regularize', got {friction!r}")
     if stabilization not in STABILIZATIONS:
         raise TypeError(f"stabilization must be one of {', '.join(STABILIZATIONS)}, got {stabilization!r}")
+    if hasattr(system, "bindable"):  # values of declared parameters that cancel out: ignored, with a warning
+        params = system.bindable(params)
     eqs = system.derived
     switches = switching_functions(eqs)
     if switches and friction == "regularize":

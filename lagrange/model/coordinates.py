@@ -18,6 +18,7 @@ from ..conventions import VELOCITY_SUFFIX, t
 __all__ = [
     "coordinates",
     "parameters",
+    "unknowns",
     "delta",
     "is_coordinate",
     "coordinate_name",
@@ -65,7 +66,11 @@ def coordinates(spec: str | Sequence[str]):
 
 
 def parameters(spec: str | Sequence[str], **assumptions):
-    """Parameters as real symbols, positive unless other assumptions are given.
+    """Parameters as real symbols, **positive** unless other assumptions are given.
+
+    Positivity is what lets sympy simplify ``sqrt(m**2)`` to ``m``; it also means sympy takes the symbol
+    to be positive everywhere. For a quantity that may be zero or negative (an unknown force, a reaction,
+    an offset) use :func:`unknowns` or pass ``real=True``.
 
     >>> from lagrange import parameters
     >>> m, g = parameters("m g")
@@ -76,6 +81,22 @@ def parameters(spec: str | Sequence[str], **assumptions):
         assumptions = {"positive": True}
     assumptions.setdefault("real", True)
     syms = tuple(sp.Symbol(n, **assumptions) for n in _names(spec))
+    return syms[0] if len(syms) == 1 else syms
+
+
+def unknowns(spec: str | Sequence[str]):
+    """Unknowns (forces, reactions, offsets to solve for) as real symbols with no sign assumption.
+
+    Use them for the quantities :func:`~lagrange.actuator_forces` and :func:`~lagrange.static_equilibrium`
+    solve for: a force declared with :func:`parameters` is positive, so a solution in which it is zero or
+    negative would not fit its declaration (those functions solve for real values whatever the declaration).
+
+    >>> from lagrange import unknowns
+    >>> F1, F2 = unknowns("F1 F2")
+    >>> F1.is_real, F1.is_positive
+    (True, None)
+    """
+    syms = tuple(sp.Symbol(n, real=True) for n in _names(spec))
     return syms[0] if len(syms) == 1 else syms
 
 

@@ -62,6 +62,14 @@ def _exact(value, what: str, problems: list[str]) -> sp.Expr:
     return expr
 
 
+def _rational(value):
+    """``value`` with every Float replaced by the rational of its decimal representation (0.1 → 1/10)."""
+    expr = sp.sympify(value)
+    if isinstance(expr, sp.Basic) and expr.atoms(sp.Float):
+        expr = expr.xreplace({f: sp.nsimplify(f, rational=True) for f in expr.atoms(sp.Float)})
+    return expr
+
+
 def _check_nonnegative(subject: str, **quantities) -> list[sp.Expr]:
     """Sympify ``quantities`` and raise one DeclarationError listing every float or negative value."""
     problems: list[str] = []
@@ -95,6 +103,16 @@ def _matrix3(R, what: str) -> sp.Matrix:
     return M
 
 
+def _trigonometric_roots(J: sp.Matrix) -> list[sp.Expr]:
+    """Eigenvalues of a real symmetric 3x3 J by the trigonometric form of the cubic (no imaginary unit)."""
+    q = J.trace() / 3
+    B0 = J - q * sp.eye(3)
+    p = sp.sqrt((B0 * B0).trace() / 6)
+    r = B0.det(method="berkowitz") / (2 * p**3)
+    phi = sp.acos(r) / 3
+    return [q + 2 * p * sp.cos(phi + 2 * sp.pi * k / 3) for k in range(3)]
+
+
 @dataclass(frozen=True, slots=True)
 class Inertia:
     r"""Moments and (positive, Wells 7.1) products of inertia about one point and one set of axes.
@@ -106,10 +124,14 @@ class Inertia:
     I_xy, I_xz, I_yz : sympy expressions, default 0
         Wells' products :math:`\sum m x y` etc. They enter :attr:`tensor` with a minus sign.
 
+    Floats are accepted and made exact: each becomes the rational of its shortest decimal representation
+    (``0.1`` → ``1/10``, by ``nsimplify(..., rational=True)``), so results are exact for the number as
+    typed (not for the binary double). Pass ``sp.Rational`` or symbols to state exactness yourself.
+
     Raises
     ------
     DeclarationError
-        If a value holds a float (use ``sp.Rational``) or a moment is known to be negative.
+        If a moment is known to be negative.
 
     References
     ----------
@@ -138,7 +160,7 @@ class Inertia:
     def __post_init__(self):
         problems: list[str] = []
         for name in _NAMES:
-            value = _exact(getattr(self, name), name, problems)
+            value = _exact(_rational(getattr(self, name)), name, problems)
             if name in _NAMES[:3] and getattr(value, "is_negative", None):
                 problems.append(f"{name} = {value} is negative; a moment of inertia is >= 0")
             object.__setattr__(self, name, value)
@@ -210,26 +232,37 @@ class Inertia:
         return sp.expand((p * sp.eye(3) - self.tensor).det())
 
     def principal(self) -> list[sp.Expr]:
-        r"""The three principal moments (with multiplicity), the roots of the cubic (7.11).
+        r"""The three principal moments (with multiplicity), the roots of the cubic (7.11), in a real form.
 
-        Computed symbolically with ``Matrix.eigenvals``; sorted ascending when all are numbers. For a
-        general symbolic tensor the roots are the (large) cubic formula; prefer
-        :meth:`principal_axes_numeric` for numbers.
+        The tensor is real and symmetric, so the roots are real; they are returned without the imaginary unit
+        that Cardano's formula carries (casus irreducibilis). Diagonal tensors give their diagonal; roots sympy
+        finds free of ``I`` (a factorable cubic) are kept; otherwise the trigonometric form of the cubic
+        (Smith 1961) is used: with :math:`q = \operatorname{tr}J/3`,
+        :math:`p = \sqrt{\operatorname{tr}((J - qE)^2)/6}`, :math:`r = \det((J - qE)/p)/2`,
 
-        Raises
-        ------
-        NotImplementedError
-            If sympy cannot find the roots in closed form.
+        .. math:: I_k = q + 2p\cos\Big(\frac{\arccos r + 2\pi k}{3}\Big),\qquad k = 0, 1, 2,
+
+        valid wherever ``p ≠ 0`` (``p = 0`` only for a multiple of the identity). Sorted ascending when all are
+        numbers.
 
         >>> Inertia(2, 2, 5, I_xy=1).principal()
         [1, 3, 5]
+        >>> [round(float(v), 10) for v in Inertia(3, 4, 5, I_xy=1, I_yz=1, I_xz=1).principal()]
+        [1.7856802566, 4.5391888728, 5.6751308706]
         """
-        values = self.tensor.eigenvals(multiple=True)
-        if len(values) != 3:
-            raise NotImplementedError("sympy found no closed form for the principal moments; "
-                                      "use principal_axes_numeric with numbers")
-        values = [simplify(v) for v in values]
-        if all(v.is_number and v.is_real for v in values):
+        J = self.tensor
+        off = (J[0, 1], J[0, 2], J[1, 2])
+        if all(v == 0 for v in off):
+            values = [J[0, 0], J[1, 1], J[2, 2]]
+        else:
+            lam = sp.Dummy("lam")
+            _, factors = sp.factor_list(self.characteristic_polynomial(lam), lam)
+            if all(sp.degree(f, lam) <= 2 for f, _ in factors):  # linear and quadratic factors: real radicals
+                found = [v for f, k in factors for v in sp.roots(sp.Poly(f, lam), multiple=True) * k]
+                values = [simplify(v, limit=400) for v in found]
+            else:
+                values = _trigonometric_roots(J)
+        if all(v.is_number for v in values):
             values.sort(key=lambda v: float(v))
         return values
 

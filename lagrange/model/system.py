@@ -10,26 +10,37 @@ Sign conventions are those of :mod:`lagrange.conventions` (Wells' power function
 
 from __future__ import annotations
 
+import warnings
 from collections.abc import Mapping, Sequence
 from functools import cached_property
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, NamedTuple
 
 import sympy as sp
 from sympy.core.function import AppliedUndef
 
 from ..conventions import VELOCITY_SUFFIX, t
+from ..conventions import t as _TIME
 from ..errors import DeclarationError
 from .bodies import Body
 from .constraints import Differential, Holonomic, Nonholonomic, normalize_constraints
 from .coordinates import coordinate_name, is_coordinate, virtual_displacement
 from .forces import generalized_forces
+from .integrals import evaluate_integrals
 
 if TYPE_CHECKING:
     from ..codegen.numeric import NumericModel
     from ..derive.equations import Equations
     from ..results.trajectory import Trajectory
 
-__all__ = ["System"]
+__all__ = ["System", "DegreesOfFreedom"]
+
+
+class DegreesOfFreedom(NamedTuple):
+    """Degrees of freedom of a system with ``n`` coordinates: ``configuration = n − (holonomic constraints)``,
+    ``velocity = n − (all constraints)`` (Wells §12; equal without non-holonomic constraints)."""
+
+    configuration: int
+    velocity: int
 
 
 def _as_coordinate_tuple(coords) -> tuple:
@@ -81,6 +92,18 @@ class System:
         differential form :class:`~lagrange.Differential`). All coordinates are kept and multipliers
         λ are added (Wells ch. 12); see :mod:`lagrange.model.constraints` for the sign convention and
         :func:`lagrange.eliminate` to remove superfluous coordinates instead.
+
+    Attributes
+    ----------
+    T, V, P, rayleigh : sympy expressions in the coordinate functions ``q(t)``, ``q'(t)`` and ``t``
+        The kinetic energy (of ``T`` and every body together; ``T_given`` is the ``T`` argument alone), the
+        potential energy, Wells' power function and the Rayleigh function, after prescribed motion is
+        substituted and integrals are evaluated (:mod:`lagrange.model.integrals`). :attr:`lagrangian` is
+        ``T − V``. Like every user-facing expression they are in coordinate functions; generated code works
+        in plain symbols (:func:`lagrange.to_symbols` converts).
+    forces : dict ``{q: F_q}`` of the declared generalized forces
+    constraints : tuple of normalized constraints (see :mod:`lagrange.model.constraints`)
+    dof : :class:`DegreesOfFreedom` — configuration and velocity degrees of freedom
 
     Raises
     ------
@@ -153,7 +176,7 @@ class System:
             presc[key] = val
 
         def prep(expr, what):
-            e = _sym(expr, what, problems)
+            e = evaluate_integrals(_sym(expr, what, problems), what, problems)
             if presc:
                 e = e.subs(presc).doit()
             return e
@@ -165,7 +188,8 @@ class System:
         bodies = tuple(b for b in bodies if isinstance(b, Body))
         if T is None and not bodies:
             problems.append("no kinetic energy: give T or bodies (e.g. Particle(m, (x, y)))")
-        T_total = prep(0 if T is None else T, "T")
+        T_given = prep(0 if T is None else T, "T")
+        T_total = T_given
         for b in bodies:
             T_total += prep(b.kinetic_energy(), f"kinetic energy of {b!r}")
 
@@ -176,6 +200,7 @@ class System:
         if presc and forces is not None:
             raw_forces = _substitute_forces(forces, presc)
         F = generalized_forces(raw_forces, coords, problems) if coords else {}
+        F = {q: evaluate_integrals(f, f"F_{coordinate_name(q)}", problems) for q, f in F.items()}
 
         specs = ()
         constraints = list(constraints or ()) + [c for b in bodies for c in getattr(b, "constraints", tuple)()]
@@ -183,6 +208,8 @@ class System:
             raw = [_substitute_constraint(c, presc) for c in constraints] if presc else list(constraints)
             specs = normalize_constraints(raw, coords, problems)
             for spec in specs:
+                if spec.velocity.has(sp.Integral):
+                    problems.append(f"constraint {spec.name} contains an integral: give it in closed form")
                 self._check_expr(spec.name, spec.velocity, coords, presc, 1, problems, parameters)
         self._check_expr("T", T_total, coords, presc, 1, problems, parameters)
         self._check_expr("V", V_e, coords, presc, 0, problems, parameters)
@@ -195,7 +222,7 @@ class System:
 
         self.coordinates: tuple = coords
         self.T: sp.Expr = T_total
-        self.T_given: sp.Expr = prep(0 if T is None else T, "T")
+        self.T_given: sp.Expr = T_given
         self.V: sp.Expr = V_e
         self.P: sp.Expr = P_e
         self.rayleigh: sp.Expr = D_e
@@ -351,15 +378,103 @@ class System:
         e = self._equations
         return {q: to_functions(e.nonconservative[i], self.coordinates) for i, q in enumerate(self.coordinates)}
 
+    @property
+    def lagrangian(self) -> sp.Expr:
+        """L = T − V in the coordinate functions (P, the Rayleigh function and the forces are not part of it)."""
+        return self.T - self.V
+
+    @property
+    def dof(self) -> DegreesOfFreedom:
+        """``(configuration, velocity)`` degrees of freedom: n − holonomic constraints, n − all constraints."""
+        n = len(self.coordinates)
+        hol = sum(1 for c in self.constraints if c.kind == "holonomic")
+        return DegreesOfFreedom(n - hol, n - len(self.constraints))
+
+    @cached_property
+    def declared_symbols(self) -> frozenset:
+        """Every symbol of the declaration (energies, forces, constraints, prescribed motion, bodies' masses,
+        positions, inertia and orientation) except ``t`` — a superset of :attr:`parameters`, which holds only
+        those that survive in the equations of motion."""
+        exprs = [self.T, self.V, self.P, self.rayleigh, *self.forces.values(), *self.prescribed.values()]
+        for c in self.constraints:
+            exprs.append(c.velocity)
+        for b in self.bodies:
+            exprs += list(b.position_vectors())
+            exprs += [getattr(b, a) for a in ("mass", "inertia", "com", "R", "origin") if hasattr(b, a)]
+        out = set().union(*(sp.sympify(e).free_symbols for e in exprs))
+        return frozenset(s for s in out if s != t and not s.name.startswith("delta_"))
+
+    def bindable(self, params: Mapping | None) -> dict:
+        """``params`` without the values of declared parameters that cancel out of the equations of motion.
+
+        Those values are accepted and ignored with one :class:`~lagrange.errors.UnusedParameterWarning` naming
+        them (a user's full parameter dict needs no filtering). A name the declaration does not contain is
+        kept, so :func:`~lagrange.codegen.numeric.bind_parameters` reports it as unknown.
+        """
+        from ..errors import UnusedParameterWarning
+
+        params = dict(params or {})
+        used = {s.name for s in self._equations.numeric_parameters}
+        declared = {s.name for s in self.declared_symbols}
+        if self._declared_parameters is not None:
+            declared |= {s.name for s in self._declared_parameters}
+        out, dropped = {}, []
+        for key, value in params.items():
+            name = key.name if isinstance(key, sp.Symbol) else str(key)
+            if name not in used and name in declared:
+                dropped.append(name)
+            else:
+                out[key] = value
+        if dropped:
+            warnings.warn(f"parameter(s) {', '.join(sorted(dropped))} of {self.name or 'the system'} cancel out of "
+                          "the equations of motion; their values are ignored", UnusedParameterWarning, stacklevel=3)
+        return out
+
     # --- numbers ------------------------------------------------------------------------------
     def compile(self, params: Mapping | None = None, *, backend: str = "python") -> NumericModel:
         """Generate numeric code for ``M q̈ = f`` with parameters bound to ``params``.
 
-        See :func:`lagrange.codegen.numeric.compile_equations`.
+        Values of declared parameters that cancel out are ignored with a warning (:meth:`bindable`). See
+        :func:`lagrange.codegen.numeric.compile_equations`.
         """
         from ..codegen.numeric import compile_equations
 
-        return compile_equations(self._equations, params or {}, backend=backend)
+        return compile_equations(self._equations, self.bindable(params), backend=backend)
+
+    def multipliers_at(self, state: Mapping, params: Mapping | None = None, *, t: float = 0.0) -> dict:
+        """``{constraint name: λ}`` at one state, as :meth:`Trajectory.multiplier
+        <lagrange.results.trajectory.Trajectory.multiplier>` gives them along a run.
+
+        ``state`` is keyed like ``initial`` of :meth:`simulate` (coordinates and velocities, or names); it
+        must satisfy the constraints (it is not projected). ``Aᵀλ`` is the generalized constraint force
+        (:meth:`constraint_forces_at`). Empty without constraints.
+        """
+        from ..integrate.run import initial_state
+
+        eqs = self._equations
+        if not eqs.m:
+            return {}
+        model = self.compile(params)
+        lam = model.multipliers(float(t), initial_state(eqs.coordinates, state))
+        return {name: float(v) for name, v in zip(eqs.constraint_names, lam)}
+
+    def constraint_forces_at(self, state: Mapping, params: Mapping | None = None, *, t: float = 0.0) -> dict:
+        """``{q: (Bλ)_q}`` — the generalized constraint force on each coordinate at one state (``B = Aᵀ``
+        except for rough constraints); see :meth:`multipliers_at`."""
+        import numpy as np
+
+        from ..integrate.run import initial_state
+
+        eqs = self._equations
+        if not eqs.m:
+            return {q: 0.0 for q in self.coordinates}
+        model = self.compile(params)
+        y = initial_state(eqs.coordinates, state)
+        lam = np.asarray(model.multipliers(float(t), y), dtype=float)
+        sub = {**dict(zip(eqs.numeric_parameters, model.params)), **dict(zip(eqs.q, y[: eqs.n])),
+               **dict(zip(eqs.qd, y[eqs.n:])), _TIME: float(t)}
+        Bn = np.array(sp.Matrix(eqs.reaction_matrix).xreplace(sub).evalf(), dtype=float).reshape(eqs.n, eqs.m)
+        return {q: float(v) for q, v in zip(self.coordinates, Bn @ lam)}
 
     def simulate(self, t_span, initial: Mapping, params: Mapping | None = None, **options: Any) -> Trajectory:
         """Integrate the equations of motion; see :func:`lagrange.integrate.run.simulate`."""
@@ -371,7 +486,11 @@ class System:
     def __repr__(self) -> str:
         label = f" {self.name!r}" if self.name else ""
         names = ", ".join(coordinate_name(q) for q in self.coordinates)
-        return f"<System{label}: {len(self.coordinates)} DOF ({names})>"
+        n, dof = len(self.coordinates), self.dof
+        if not self.constraints:
+            return f"<System{label}: {n} DOF ({names})>"
+        return (f"<System{label}: {n} coordinates ({names}), {len(self.constraints)} constraint(s): "
+                f"{dof.configuration} DOF in configuration, {dof.velocity} in velocity>")
 
     def __str__(self) -> str:
         from ..printing import format_equations

@@ -1,0 +1,282 @@
+"""No silent wrong answers at the seams (issue #19, item 5) and the small conveniences of item 6.
+
+Truth used: closed forms (statics by hand, Wells Ex. 6.8's plate, the harmonic oscillator's action, a skewed
+disc's bearing torque), numpy's eigensolver, and the run's own multipliers (Trajectory.multiplier).
+"""
+
+import warnings
+
+import numpy as np
+import pytest
+import sympy as sp
+
+import lagrange as lg
+from lagrange import t
+from lagrange.simplification import is_zero
+
+
+# ----- unknown forces are real, whatever their declaration -------------------------------------------------
+def _block(sign):
+    x = lg.coordinates("x")
+    m, k, g = lg.parameters("m k g")
+    F = lg.parameters("F")  # positive, as users declare forces by habit
+    s = lg.System([x], T=m * x.diff(t) ** 2 / 2, V=k * x**2 / 2 + sign * m * g * x, forces={x: F})
+    return s, x, m, k, g, F
+
+
+@pytest.mark.parametrize("sign", [1, -1])
+def test_static_equilibrium_finds_forces_of_either_sign(sign):
+    s, x, m, k, g, F = _block(sign)
+    sols = lg.static_equilibrium(s, [F])
+    assert len(sols) == 1
+    assert is_zero(sols[0][F] - (k * x + sign * m * g))  # F = ∂V/∂x at rest, of either sign
+
+
+def test_actuator_force_that_is_negative_or_zero():
+    x = lg.coordinates("x")
+    m, g = lg.parameters("m g")
+    F = lg.parameters("F")
+    s = lg.System([x], T=m * x.diff(t) ** 2 / 2, V=-m * g * x)  # gravity along +x
+    # holding the mass at rest needs F = −m g (< 0): formerly "not determined uniquely (0 solutions)"
+    assert is_zero(lg.actuator_forces(s, F * lg.delta(x), [F], motion={x: sp.S(0)})[F] + m * g)
+    free = lg.System([x], T=m * x.diff(t) ** 2 / 2)
+    assert lg.actuator_forces(free, F * lg.delta(x), [F], motion={x: 3 * t})[F] == 0  # uniform motion: F = 0
+    F1, F2 = lg.unknowns("F1 F2")
+    assert F1.is_real and F1.is_positive is None
+    with pytest.raises(lg.LagrangeError, match="not determined uniquely"):
+        lg.actuator_forces(free, (F1 + F2) * lg.delta(x), [F1, F2], motion={x: t**2})
+
+
+def _cartesian_pendulum():
+    X, Y = lg.coordinates("X Y")
+    m, g, l = lg.parameters("m g l")
+    s = lg.System([X, Y], bodies=[lg.Particle(m, (X, Y))], V=m * g * Y,
+                  constraints=[lg.Holonomic(X**2 + Y**2 - l**2, "rod")])
+    return s, X, Y, m, g, l
+
+
+def test_statics_and_driving_include_the_constraint_forces():
+    s, X, Y, m, g, l = _cartesian_pendulum()
+    lam = s.derived.multipliers[0]
+    sols = lg.static_equilibrium(s, [X, Y])
+    hanging = [sol for sol in sols if is_zero(sol[Y] + l)]
+    assert len(sols) == 2 and len(hanging) == 1
+    # rod tension m g: Aᵀλ = (2X, 2Y)λ balances gravity, so λ = −m g / (2 l) at the bottom
+    assert hanging[0][X] == 0 and is_zero(hanging[0][lam] + m * g / (2 * l))
+    num = lg.static_equilibrium(s, [X, Y], {"m": 1.5, "g": 9.81, "l": 2.0}, {X: 0.3, Y: -1.5})
+    assert num[X] == pytest.approx(0, abs=1e-9) and num[Y] == pytest.approx(-2.0)
+    assert num[lam] == pytest.approx(-1.5 * 9.81 / 4)
+    # a horizontal actuator turning the pendulum at constant rate ω needs F = m g tanθ (tangential balance)
+    w = lg.parameters("omega")
+    F = lg.unknowns("F")
+    motion = {X: l * sp.sin(w * t), Y: -l * sp.cos(w * t)}
+    assert is_zero(lg.actuator_forces(s, F * lg.delta(X), [F], motion=motion)[F] - m * g * sp.tan(w * t))
+    need = lg.driving_forces(s, motion)
+    assert lam in need[X].free_symbols  # the constraint force is part of the balance, not dropped
+    with pytest.raises(lg.LagrangeError, match="violates the constraint"):
+        lg.driving_forces(s, {X: l * sp.sin(w * t), Y: -l})
+
+
+def test_statics_refuses_dry_friction_and_moving_constraints():
+    x = lg.coordinates("x")
+    m, g, mu, v = lg.parameters("m g mu v")
+    F = lg.unknowns("F")
+    dry = lg.System([x], T=m * x.diff(t) ** 2 / 2, P=-mu * m * g * sp.Abs(x.diff(t)), forces={x: F})
+    with pytest.raises(lg.LagrangeError, match="dry friction"):
+        lg.static_equilibrium(dry, [F])
+    X, Y = lg.coordinates("X Y")
+    moving = lg.System([X, Y], bodies=[lg.Particle(m, (X, Y))], constraints=[X - v * t], forces={Y: F})
+    with pytest.raises(lg.LagrangeError, match="moves"):
+        lg.static_equilibrium(moving, [F])
+
+
+# ----- integrals in P or forces -----------------------------------------------------------------------------
+def _board():
+    x, y, th = lg.coordinates("x y theta")
+    m, I, a, b, al = lg.parameters("m I a b alpha")
+    return x, y, th, m, I, a, b, al
+
+
+def test_integral_in_P_is_evaluated_wells_ex_6_8():
+    """Wells Ex. 6.8: a 2a×2b board on a viscous film, α per unit area: F_x = −Aα ẋ, F_θ = −(1/3)Aα(a²+b²)θ̇."""
+    x, y, th, m, I, a, b, al = _board()
+    X, Y = sp.symbols("X Y", real=True)
+    xd, yd, thd = x.diff(t), y.diff(t), th.diff(t)
+    vx = xd - thd * (X * sp.sin(th) + Y * sp.cos(th))
+    vy = yd + thd * (X * sp.cos(th) - Y * sp.sin(th))
+    s = lg.System([x, y, th], T=m * (xd**2 + yd**2) / 2 + I * thd**2 / 2,
+                  P=-al / 2 * sp.Integral(vx**2 + vy**2, (X, -a, a), (Y, -b, b)))
+    assert not s.P.has(sp.Integral)
+    A = 4 * a * b
+    Q = s.generalized_forces()
+    assert is_zero(Q[x] + A * al * xd) and is_zero(Q[th] + A * al * (a**2 + b**2) * thd / 3)
+    p = {"m": 2.0, "I": 0.5, "alpha": 0.3, "a": 1.0, "b": 0.5}
+    tr = s.simulate(1.0, {x: 0, y: 0, th: 0, "x_dot": 1.0, "y_dot": 0.0, "theta_dot": 2.0}, p)
+    assert tr.y[-1, 3] == pytest.approx(np.exp(-0.3 * 2 / 2.0), rel=1e-8)  # ẋ = e^{−Aα t / m}
+    assert tr.y[-1, 5] == pytest.approx(2.0 * np.exp(-0.3 * 2 * 1.25 / 3 / 0.5), rel=1e-8)
+
+
+def test_integral_without_closed_form_is_refused_at_declaration(tmp_path):
+    x, y, th, m, I, a, b, al = _board()
+    r = sp.Symbol("r", real=True)
+    # no closed form in sympy: the integral must be named, never reach the code printer
+    bad = sp.Integral(sp.gamma(r * x.diff(t)), (r, 0, a))
+    with pytest.raises(lg.DeclarationError, match=r"F_x contains the integral .*closed form"):
+        lg.System([x, y, th], T=m * x.diff(t) ** 2 / 2, forces={x: bad})
+    spec = tmp_path / "plate.py"  # the CLI path builds the same System
+    spec.write_text("import sympy as sp, lagrange as lg\nx = lg.coordinates('x'); a = lg.parameters('a')\n"
+                    "r = sp.Symbol('r', real=True)\nsystem = lg.System([x], T=x.diff(lg.t)**2/2, "
+                    "P=sp.Integral(sp.gamma(r*x.diff(lg.t)), (r, 0, a)))\n")
+    from lagrange.spec.loader import load_spec
+
+    with pytest.raises(lg.SpecError, match="integral"):
+        load_spec(str(spec))
+
+
+@pytest.mark.slow
+def test_dry_friction_over_a_rod_is_refused_wells_p6_25():
+    """Wells Prob. 6.25: P = −f ∫₀ˡ |v(r)| dr; sympy finds no closed form, so it is refused by name."""
+    x, y, th, m, I, a, b, al = _board()
+    f, l = lg.parameters("f l")
+    r = sp.Symbol("r", real=True)
+    xd, yd, thd = x.diff(t), y.diff(t), th.diff(t)
+    P = -f * sp.Integral(sp.sqrt(xd**2 + yd**2 + r**2 * thd**2 + 2 * r * thd * (yd * sp.cos(th) - xd * sp.sin(th))),
+                         (r, 0, l))
+    with pytest.raises(lg.DeclarationError, match="P contains the integral"):
+        lg.System([x, y, th], T=m * (xd**2 + yd**2) / 2 + I * thd**2 / 2, P=P)
+
+
+# ----- parameters that cancel out ----------------------------------------------------------------------------
+def test_values_of_cancelled_parameters_are_accepted_with_a_warning():
+    x = lg.coordinates("x")
+    m, k, c, M0 = lg.parameters("m k c M0")  # c: an offset of the position; M0: a mass at a fixed point
+    s = lg.System([x], V=k * x**2 / 2, bodies=[lg.Particle(m, (x + c,)), lg.Particle(M0, (1, 2))])
+    assert {p.name for p in s.parameters} == {"k", "m"}
+    full = {"m": 1.0, "k": 4.0, "c": 7.0, "M0": 3.0}
+    with pytest.warns(lg.UnusedParameterWarning, match="M0, c"):
+        tr = s.simulate(np.pi / 2, {x: 1.0, "x_dot": 0.0}, full)
+    assert tr.y[-1, 0] == pytest.approx(np.cos(2 * np.pi / 2), abs=1e-8)  # ω = 2
+    with pytest.warns(lg.UnusedParameterWarning):
+        s.compile(full)
+    with pytest.raises(lg.ParameterError, match="unknown parameter.*zz"):
+        s.simulate(1.0, {x: 1.0, "x_dot": 0.0}, {**full, "zz": 1.0})
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        s.compile({"m": 1.0, "k": 4.0})  # nothing to ignore: no warning
+
+
+# ----- multipliers at a state, dof, accessors ----------------------------------------------------------------
+def test_multipliers_at_a_state_agree_with_the_run_and_by_hand():
+    s, X, Y, m, g, l = _cartesian_pendulum()
+    state = {X: 0.6, Y: -0.8, "X_dot": 1.6, "Y_dot": 1.2}  # speed 2 on the unit circle
+    p = {"m": 1.5, "g": 9.81, "l": 1.0}
+    lam = s.multipliers_at(state, p)
+    assert list(lam) == ["rod"]
+    tension = 1.5 * 4 / 1.0 + 1.5 * 9.81 * 0.8  # m v²/l + gravity's outward radial component
+    Q = s.constraint_forces_at(state, p)
+    assert np.hypot(Q[X], Q[Y]) == pytest.approx(tension, rel=1e-12)
+    assert Q[X] == pytest.approx(2 * 0.6 * lam["rod"]) and Q[Y] == pytest.approx(2 * -0.8 * lam["rod"])
+    tr = s.simulate(0.1, state, p, n_points=3)
+    assert tr.multiplier("rod")[0] == pytest.approx(lam["rod"], rel=1e-10)
+
+
+def test_dof_agrees_between_repr_and_str_and_lagrangian():
+    s, X, Y, m, g, l = _cartesian_pendulum()
+    assert s.dof == (1, 1)
+    assert "1 DOF in configuration, 1 in velocity" in repr(s)
+    assert "1 degree(s) of freedom in configuration, 1 in velocity" in str(s).splitlines()[0]
+    x, y, th = lg.coordinates("x y theta")
+    rolling = lg.System([x, y, th], T=(x.diff(t) ** 2 + y.diff(t) ** 2 + th.diff(t) ** 2) / 2,  # knife edge
+                        constraints=[lg.Nonholonomic(sp.sin(th) * x.diff(t) - sp.cos(th) * y.diff(t))])
+    assert rolling.dof == (3, 2) and "3 DOF in configuration, 2 in velocity" in repr(rolling)
+    assert sp.simplify(s.lagrangian - (s.T - s.V)) == 0 and s.lagrangian.has(X.diff(t))
+
+
+def test_symbol_converters_are_exported():
+    x = lg.coordinates("x")
+    e = x.diff(t, 2) + x.diff(t) * x
+    plain = lg.to_symbols(e, [x])
+    assert {str(v) for v in plain.free_symbols} == {"x", "x_dot", "x_ddot"}
+    assert lg.to_functions(plain, [x]) == e
+    assert lg.Frame is lg.model.frames.Frame and lg.EarthFrame is lg.model.frames.EarthFrame
+
+
+# ----- support loads in one frame ---------------------------------------------------------------------------
+def test_support_loads_of_a_skewed_disc_in_both_frames():
+    """A disc (A, A, C) turning at constant ω about the inertial z axis with its symmetry axis tilted by β:
+    the bearings must supply the torque (C − A) ω² sinβ cosβ (Wells 9.10), perpendicular to the spin axis."""
+    A, C, w, beta, M = lg.parameters("A C omega beta M")
+    R = lg.rot_z(w * t) * lg.rot_x(beta)
+    disc = lg.RigidBody(M, lg.Inertia(A, A, C), orientation=R)
+    F_i, tau_i = lg.support_loads(disc)
+    F_b, tau_b = lg.support_loads(disc, frame="body")
+    assert F_i == sp.zeros(3, 1) and F_b == sp.zeros(3, 1)
+    assert sp.simplify(tau_i.dot(tau_i) - ((C - A) * w**2 * sp.sin(beta) * sp.cos(beta)) ** 2) == 0
+    assert sp.simplify(tau_i[2]) == 0  # perpendicular to the inertial spin axis
+    assert sp.simplify(R * tau_b - tau_i) == sp.zeros(3, 1)
+    with pytest.raises(ValueError, match="frame"):
+        lg.support_loads(disc, frame="space")
+
+
+# ----- the action of any path --------------------------------------------------------------------------------
+def _oscillator():
+    x = lg.coordinates("x")
+    m, k = lg.parameters("m k")
+    return lg.System([x], T=m * x.diff(t) ** 2 / 2, V=k * x**2 / 2), x
+
+
+def test_action_of_the_true_path_closed_form():
+    s, x = _oscillator()
+    m, w, T, x0, x1 = 2.0, 3.0, 0.7, 0.4, -0.9
+    p = {"m": m, "k": m * w**2}
+    exact = m * w / (2 * np.sin(w * T)) * ((x0**2 + x1**2) * np.cos(w * T) - 2 * x0 * x1)
+    path = (x0 * sp.sin(w * (T - t)) + x1 * sp.sin(w * t)) / np.sin(w * T)
+    assert lg.action({x: path}, s, p, t=(0, T)) == pytest.approx(exact, rel=1e-11)
+    fn = sp.lambdify(t, path, "numpy")
+    assert lg.action({x: fn}, s, p, t=(0, T)) == pytest.approx(exact, rel=1e-9)
+    assert lg.action(lambda u: [fn(u)], s, p, t=(0, T)) == pytest.approx(exact, rel=1e-9)
+    grid = np.linspace(0, T, 2001)
+    assert lg.action(fn(grid)[:, None], s, p, t=grid) == pytest.approx(exact, rel=1e-5)  # 2nd-order q̇
+    vel = sp.lambdify(t, sp.diff(path, t), "numpy")
+    sampled = np.column_stack([fn(grid), vel(grid)])
+    assert lg.action(sampled, s, p, t=grid) == pytest.approx(exact, rel=1e-10)
+    tr = s.simulate((0, T), {x: x0, "x_dot": float(vel(0))}, p, n_points=2001)
+    assert lg.action(tr) == pytest.approx(exact, rel=1e-9)
+
+
+def test_action_of_a_free_particle_and_bad_paths():
+    x = lg.coordinates("x")
+    m = lg.parameters("m")
+    free = lg.System([x], T=m * x.diff(t) ** 2 / 2)
+    assert lg.action({x: 1 + 2.5 * t}, free, {"m": 3.0}, t=(0, 2)) == pytest.approx(3.0 * 2.5**2 * 2 / 2)
+    with pytest.raises(lg.LagrangeError, match="shape"):
+        lg.action(np.zeros((5, 3)), free, {"m": 1.0}, t=np.linspace(0, 1, 5))
+    with pytest.raises(lg.LagrangeError, match="needs the system"):
+        lg.action({x: t})
+    s, X, Y, *_ = _cartesian_pendulum()
+    with pytest.raises(lg.LagrangeError, match="constrained"):
+        lg.action({X: t, Y: t}, s, {"m": 1, "g": 1, "l": 1}, t=(0, 1))
+
+
+# ----- principal moments, floats ----------------------------------------------------------------------------
+def test_principal_moments_are_real_forms():
+    J = lg.Inertia(3, 4, 5, I_xy=1, I_yz=1, I_xz=sp.Rational(1, 2))
+    values = J.principal()
+    assert not any(v.has(sp.I) for v in values)
+    assert np.allclose([float(v) for v in values], np.linalg.eigvalsh(np.array(J.tensor, dtype=float)), rtol=1e-13)
+    a, b, c, d, e, f = sp.symbols("a b c d e f", positive=True)
+    Js = lg.Inertia(a, b, c, d, e, f)
+    sym = Js.principal()
+    assert not any(v.has(sp.I) for v in sym)
+    at = {a: 3, b: 4, c: 5, d: 1, e: sp.Rational(1, 2), f: 1}
+    roots = sp.lambdify(list(at), sym, "math")(*[float(v) for v in at.values()])
+    assert np.allclose(sorted(roots),
+                       np.linalg.eigvalsh(np.array(Js.tensor.subs(at), dtype=float)), rtol=1e-12)
+    found = lg.Inertia(a, a, c, I_xy=d).principal()  # factorable: the plain roots are kept
+    assert len(found) == 3 and all(any(is_zero(v - w) for v in found) for w in (c, a - d, a + d))
+
+
+def test_floats_in_inertia_are_made_exact():
+    J = lg.Inertia(0.5, 1.25, 2.0, I_xy=0.1)
+    assert J.I_x == sp.Rational(1, 2) and J.I_xy == sp.Rational(1, 10)
+    assert not J.tensor.atoms(sp.Float)
