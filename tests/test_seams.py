@@ -280,3 +280,29 @@ def test_floats_in_inertia_are_made_exact():
     J = lg.Inertia(0.5, 1.25, 2.0, I_xy=0.1)
     assert J.I_x == sp.Rational(1, 2) and J.I_xy == sp.Rational(1, 10)
     assert not J.tensor.atoms(sp.Float)
+
+
+# ----- audit: System methods that ignored constraints -------------------------------------------------------
+def test_symbolic_accelerations_include_the_constraint_forces():
+    s, X, Y, m, g, l = _cartesian_pendulum()
+    acc = s.accelerations()
+    p = {"m": 1.5, "g": 9.81, "l": 1.0}
+    y = np.array([0.6, -0.8, 1.6, 1.2])
+    expected = s.compile(p).fun(0.0, y)[2:]
+    sub = {X: 0.6, Y: -0.8, X.diff(t): 1.6, Y.diff(t): 1.2, m: 1.5, g: 9.81, l: 1.0}
+    got = [float(a.subs({k: v for k, v in sub.items() if not isinstance(k, sp.Symbol)}).subs(sub)) for a in acc]
+    assert np.allclose(got, expected, rtol=1e-12)
+    assert np.hypot(got[0], got[1] + 9.81) > 1.0  # not free fall (0, −g): the rod pulls
+    assert got[0] * 0.6 + got[1] * -0.8 == pytest.approx(-(1.6**2 + 1.2**2))  # centripetal: q·q̈ = −|q̇|²
+
+
+def test_a_constrained_coordinate_is_not_ignorable():
+    x, th = lg.coordinates("x theta")
+    m, r, J = lg.parameters("m r J")
+    # a disc rolling on a line: x is absent from L, but the rolling constraint pushes on it
+    with pytest.warns(lg.IntegrableConstraintWarning):  # (x − rθ is constant; kept in velocity form)
+        rolling = lg.System([x, th], T=m * x.diff(t) ** 2 / 2 + J * th.diff(t) ** 2 / 2,
+                            constraints=[lg.Nonholonomic(x.diff(t) - r * th.diff(t), "roll")])
+    assert rolling.ignorable_coordinates() == {}
+    free = lg.System([x, th], T=m * x.diff(t) ** 2 / 2 + J * th.diff(t) ** 2 / 2)
+    assert set(free.ignorable_coordinates()) == {x, th}

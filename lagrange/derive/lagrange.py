@@ -297,7 +297,8 @@ def energy_split(system) -> tuple:
 
 
 def ignorable_coordinates(system) -> dict:
-    """``{q: p_q}`` for coordinates absent from L with no generalized force (Wells 3.3, 5.15).
+    """``{q: p_q}`` for coordinates absent from L with no generalized force (Wells 3.3, 5.15) and no
+    constraint force (no constraint involves q̇, so the column of A — of B for rough constraints — is zero).
 
     ``p_q = ∂L/∂q̇`` is then a constant of the motion.
     """
@@ -305,6 +306,7 @@ def ignorable_coordinates(system) -> dict:
     L = eqs.kinetic - eqs.potential
     out = {}
     for i, c in enumerate(eqs.coordinates):
-        if is_zero(sp.diff(L, eqs.q[i])) and is_zero(eqs.nonconservative[i]):
+        constrained = any(not is_zero(eqs.reaction_matrix[i, k]) for k in range(eqs.m))
+        if not constrained and is_zero(sp.diff(L, eqs.q[i])) and is_zero(eqs.nonconservative[i]):
             out[c] = to_functions(sp.diff(L, eqs.qd[i]), eqs.coordinates)
     return out

@@ -340,11 +340,18 @@ class System:
         return to_functions(sp.Matrix(self._equations.forcing), self.coordinates)
 
     def accelerations(self) -> sp.Matrix:
-        """q̈ = M⁻¹ f symbolically (small systems only; use compile() for numbers)."""
+        """q̈ symbolically (small systems only; use compile() for numbers): ``M⁻¹ f``, or with constraints the
+        q̈ of ``M q̈ = f + Bλ``, ``A q̈ = c`` (λ eliminated; B = Aᵀ except for rough constraints)."""
         from .coordinates import to_functions
 
         e = self._equations
-        return to_functions(sp.Matrix(e.mass_matrix).LUsolve(sp.Matrix(e.forcing)), self.coordinates)
+        M, f = sp.Matrix(e.mass_matrix), sp.Matrix(e.forcing)
+        if not e.m:
+            return to_functions(M.LUsolve(f), self.coordinates)
+        K = sp.Matrix(sp.BlockMatrix([[M, -sp.Matrix(e.reaction_matrix)],
+                                      [sp.Matrix(e.constraint_matrix), sp.zeros(e.m, e.m)]]))
+        sol = K.LUsolve(sp.Matrix.vstack(f, sp.Matrix(e.constraint_rhs)))
+        return to_functions(sol[: e.n, 0], self.coordinates)
 
     def energy_split(self) -> tuple:
         """Wells' split (2.54)–(2.56) ``T = Σ A_kl q̇_k q̇_l + Σ B_k q̇_k + C`` → ``(A, B, C)``.
