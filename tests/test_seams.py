@@ -306,3 +306,19 @@ def test_a_constrained_coordinate_is_not_ignorable():
     assert rolling.ignorable_coordinates() == {}
     free = lg.System([x, th], T=m * x.diff(t) ** 2 / 2 + J * th.diff(t) ** 2 / 2)
     assert set(free.ignorable_coordinates()) == {x, th}
+
+
+def test_rough_constraints_and_wrong_bodies_are_refused_where_unsupported():
+    X, Y = lg.coordinates("X Y")
+    m, g, mu = lg.parameters("m g mu")
+    F = lg.unknowns("F")
+    # a bead on a rough horizontal wire Y = 0: friction depends on sign(λ)·sign(Ẋ), which no state fixes
+    bead = lg.System([X, Y], bodies=[lg.Particle(m, (X, Y))], V=m * g * Y, forces={X: F},
+                     constraints=[lg.Rough(Y, mu, X.diff(t), "wire")])
+    state, p = {X: 0.0, Y: 0.0, "X_dot": 1.0, "Y_dot": 0.0}, {"m": 1.0, "g": 9.81, "mu": 0.3, "F": 0.0}
+    for call in (lambda: bead.multipliers_at(state, p), lambda: bead.constraint_forces_at(state, p),
+                 lambda: lg.static_equilibrium(bead, [F]), lambda: lg.driving_forces(bead, {X: t, Y: 0 * t})):
+        with pytest.raises(lg.LagrangeError, match="rough"):
+            call()
+    with pytest.raises(lg.DeclarationError, match="needs a RigidBody"):
+        lg.support_loads(lg.Particle(m, (X, Y)))

@@ -16,6 +16,7 @@ from __future__ import annotations
 import sympy as sp
 
 from ..conventions import t
+from ..errors import DeclarationError
 from ..model.bodies import as_vector
 
 __all__ = ["euler_equations", "projected_residuals", "support_loads"]
@@ -66,6 +67,9 @@ def support_loads(body, applied_force=(0, 0, 0), applied_torque=(0, 0, 0), *,
     """
     if frame not in _FRAMES:
         raise ValueError(f"frame must be 'inertial' or 'body', got {frame!r}")
+    if not all(hasattr(body, a) for a in ("angular_velocity", "inertia", "R", "com", "centre_of_mass")):
+        raise DeclarationError(f"support_loads needs a RigidBody, got {body!r} (a particle's support force is "
+                               "m a − F_applied, with no torque)", subject="support_loads")
     M = body.mass
     R = body.R
     Fa = as_vector(applied_force, "applied force")

@@ -461,9 +461,17 @@ class System:
         eqs = self._equations
         if not eqs.m:
             return {}
+        self._refuse_rough_at_state()
         model = self.compile(params)
         lam = model.multipliers(float(t), initial_state(eqs.coordinates, state))
         return {name: float(v) for name, v in zip(eqs.constraint_names, lam)}
+
+    def _refuse_rough_at_state(self) -> None:
+        from ..errors import LagrangeError
+
+        if self._equations.rough_signs:
+            raise LagrangeError("multipliers at a state of a system with rough constraints: the friction direction "
+                                "sign(λ)·sign(v) is not fixed by the state alone; use Trajectory.multiplier of a run")
 
     def constraint_forces_at(self, state: Mapping, params: Mapping | None = None, *, t: float = 0.0) -> dict:
         """``{q: (Bλ)_q}`` — the generalized constraint force on each coordinate at one state (``B = Aᵀ``
@@ -475,6 +483,7 @@ class System:
         eqs = self._equations
         if not eqs.m:
             return {q: 0.0 for q in self.coordinates}
+        self._refuse_rough_at_state()
         model = self.compile(params)
         y = initial_state(eqs.coordinates, state)
         lam = np.asarray(model.multipliers(float(t), y), dtype=float)
