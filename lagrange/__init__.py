@@ -15,6 +15,7 @@ from .errors import (
     DeclarationError,
     InconsistentConstraintError,
     InitialConditionError,
+    InputError,
     IntegrationError,
     LagrangeError,
     ParameterError,
@@ -28,6 +29,7 @@ from .model.constraints import Differential, Holonomic, IntegrableConstraintWarn
 from .model.coordinates import coordinates, delta, parameters
 from .model.eliminate import eliminate
 from .model.inertia import Inertia
+from .model.inputs import inputs
 from .model.rigid_body import RigidBody, Torque
 from .model.rotations import EulerAngles, Quaternion, rot_x, rot_y, rot_z
 from .model.system import System
@@ -40,6 +42,7 @@ __all__ = [
     "t",
     "coordinates",
     "parameters",
+    "inputs",
     "delta",
     "System",
     "Particle",
@@ -81,6 +84,7 @@ __all__ = [
     "InitialConditionError",
     "SingularMassMatrixError",
     "IntegrationError",
+    "InputError",
     "SpecError",
     "SymbolicTimeoutError",
     "BackendError",

@@ -97,6 +97,12 @@ class SweepError(LagrangeError, ValueError):
     dependency of sweeps is missing (the message names the extra to install)."""
 
 
+class InputError(LagrangeError, TypeError):
+    """A time-varying input cannot be used as given: a callable with a signature other than ``u(t)`` or
+    ``u(t, y)``, or a route that cannot evaluate Python per step (the compiled loops, the Taylor tape, the
+    geometric integrators) asked to run a callable or sampled input (the message names the routes that can)."""
+
+
 class SymbolicTimeoutError(LagrangeError, TimeoutError):
     """A sympy computation (solve, simplify) ran out of time in every attempt; see
     :mod:`lagrange.simplification` (``$LAGRANGE_SYMPY_SECONDS`` sets the limit per attempt)."""
@@ -106,6 +112,7 @@ __all__ = [
     "LagrangeError",
     "DeclarationError",
     "ParameterError",
+    "InputError",
     "InitialConditionError",
     "SingularMassMatrixError",
     "IntegrationError",
