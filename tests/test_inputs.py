@@ -395,3 +395,12 @@ def test_cli_simulates_a_spec_with_an_input_and_refuses_one_without_a_value(tmp_
     wrong.write_text(SPEC + '[inputs_values]\nG = "1"\n')
     assert main(["simulate", str(wrong), "-q"]) == 2
     assert "[inputs_values] has unknown name(s) G" in capsys.readouterr().err
+
+
+def test_csv_export_has_a_column_per_input(tmp_path):
+    s, x, F = oscillator()
+    sol = s.simulate(2, {x: 0, x.diff(t): 0}, params(), inputs={F: lambda tt: math.sin(tt)}, n_points=5)
+    lines = sol.to_csv(tmp_path / "run.csv").read_text().splitlines()
+    assert lines[0] == "t,x,x_dot,F,energy,jacobi,power_balance"
+    rows = np.array([[float(v) for v in ln.split(",")] for ln in lines[1:]])
+    assert np.allclose(rows[:, 3], np.sin(rows[:, 0]))

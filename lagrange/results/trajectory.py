@@ -224,15 +224,19 @@ class Trajectory:
 
     # --- export -------------------------------------------------------------------------------
     def to_csv(self, path: str | Path) -> Path:
-        """Write ``t``, the state columns and the diagnostics to a CSV file."""
+        """Write ``t``, the state columns, the inputs' values (when the system has inputs) and the diagnostics to
+        a CSV file."""
         path = Path(path)
         d = self.diagnostics
+        U = self.input_values
         with path.open("w", newline="") as fh:
             w = csv.writer(fh)
-            w.writerow(["t", *self.names, "energy", "jacobi", "power_balance"])
+            w.writerow(["t", *self.names, *(u.name for u in self.model.equations.inputs), "energy", "jacobi",
+                        "power_balance"])
             pb = self.power_balance()
             for i in range(len(self.t)):
                 w.writerow([repr(float(self.t[i])), *(repr(float(v)) for v in self.y[i]),
+                            *(repr(float(v)) for v in U[i]),
                             repr(float(d["energy"][i])), repr(float(d["jacobi"][i])), repr(float(pb[i]))])
         return path
 
