@@ -404,3 +404,16 @@ def test_csv_export_has_a_column_per_input(tmp_path):
     assert lines[0] == "t,x,x_dot,F,energy,jacobi,power_balance"
     rows = np.array([[float(v) for v in ln.split(",")] for ln in lines[1:]])
     assert np.allclose(rows[:, 3], np.sin(rows[:, 0]))
+
+
+def test_motor_torque_input_on_a_rigid_body_spins_it_up_as_the_closed_form():
+    phi = lg.coordinates("phi")
+    I = lg.parameters("I")  # noqa: E741 - the moment of inertia
+    tau = lg.inputs("tau")
+    wheel = lg.RigidBody(1, (I, I, I), orientation=lg.rot_z(phi))
+    s = lg.System([phi], bodies=[wheel], forces=[lg.Torque(wheel, (0, 0, tau))])
+    assert s.derived.inputs == (tau,)
+    # τ = a t: φ = a t³ / (6 I)
+    sol = s.simulate(2, {phi: 0, phi.diff(t): 0}, {"I": 0.5}, inputs={tau: lambda tt: 3 * tt}, n_points=21)
+    assert np.max(np.abs(sol["phi"] - 3 * sol.t**3 / (6 * 0.5))) < 1e-8
+    assert sol.energy_error() < 1e-8
