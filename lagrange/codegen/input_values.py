@@ -26,7 +26,10 @@ Accepted values, for each input ``u`` (keys: the :class:`~lagrange.model.inputs.
     a sympy expression in :data:`lagrange.t` alone (the form spec files give).
 
 A callable must return one finite real number; it is called once at the initial state when the run is
-prepared, so a wrong signature or shape fails before integrating.
+prepared, so a wrong signature or shape fails before integrating. It must be a pure function of its
+arguments: adaptive solvers call it at trial stages, rejected steps and out of time order, and
+:attr:`Trajectory.input_values <lagrange.results.trajectory.Trajectory.input_values>` (``sol[u]``) calls it
+again at the output times (a controller with internal state is a coordinate of the system, not an input).
 """
 
 from __future__ import annotations
