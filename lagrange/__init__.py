@@ -16,6 +16,7 @@ from .errors import (
     DeclarationError,
     InconsistentConstraintError,
     InitialConditionError,
+    InputError,
     IntegrationError,
     LagrangeError,
     LagrangeWarning,
@@ -32,6 +33,7 @@ from .model.coordinates import coordinates, delta, parameters, to_functions, to_
 from .model.eliminate import eliminate
 from .model.frames import EarthFrame, Frame
 from .model.inertia import Inertia
+from .model.inputs import inputs
 from .model.rigid_body import RigidBody, Torque
 from .model.rotations import EulerAngles, Quaternion, rot_x, rot_y, rot_z
 from .model.system import System
@@ -44,6 +46,7 @@ __all__ = [
     "t",
     "coordinates",
     "parameters",
+    "inputs",
     "delta",
     "System",
     "Particle",
@@ -85,6 +88,7 @@ __all__ = [
     "InitialConditionError",
     "SingularMassMatrixError",
     "IntegrationError",
+    "InputError",
     "SpecError",
     "SymbolicTimeoutError",
     "BackendError",

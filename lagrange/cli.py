@@ -31,6 +31,30 @@ def _kv(items, what) -> dict:
     return out
 
 
+def _input_values(spec, args, params: dict) -> dict:
+    """The spec's input values with ``--input`` overrides, the parameters' values substituted into expressions
+    (which then hold t alone); ``{}`` when neither gives any (simulate then names any input left without a
+    value). Parameters used only by the input values are removed from ``params`` (the system has none such)."""
+    values = {**spec.inputs, **_kv(getattr(args, "input", None), "input")}
+    out, used = {}, set()
+    for name, value in values.items():
+        if hasattr(value, "free_symbols"):
+            used |= {s.name for s in value.free_symbols}
+            value = value.subs({s: params[s.name] for s in value.free_symbols if s.name in params})
+        out[name] = value
+    own = {s.name for s in spec.system.derived.parameters}
+    for name in used - own:
+        params.pop(name, None)
+    return out
+
+
+def _input_parameters(spec) -> set:
+    """Names used by the spec's input expressions that are not parameters of the system."""
+    used = set().union(*(({s.name for s in v.free_symbols} if hasattr(v, "free_symbols") else set())
+                         for v in spec.inputs.values()))
+    return used - {s.name for s in spec.system.derived.parameters} - {"t"}
+
+
 def _cmd_problems(args) -> int:
     from .corpus.registry import all_problems
 
@@ -112,6 +136,9 @@ def _cmd_simulate(args) -> int:
             print(f"{spec.problem.id}: {spec.problem.title} ({spec.problem.source})")
         print(format_equations(spec.system))
         print()
+    inputs = _input_values(spec, args, params)
+    if inputs:
+        options["inputs"] = inputs
     sol = spec.system.simulate(float(t_end), initial, params, **options)
     print(f"{spec.label}: {spec.system!r}")
     print(f"method {sol.method}, {sol.nfev} right-hand-side evaluations, {len(sol.t)} output points")
@@ -227,8 +254,18 @@ def _cmd_sweep(args) -> int:
         if t_end is None:
             raise SpecError(f"{args.spec}: no end time: pass --t-end")
         options = {**spec.options, "method": args.method, "rtol": args.rtol, "atol": args.atol}
+        params = {**spec.params, **_kv(args.param, "param")}
+        swept_in_inputs = _input_parameters(spec) & set(over)  # parameters of input expressions
+        inputs = _input_values(spec, args, {k: v for k, v in params.items() if k not in swept_in_inputs})
+        params = {k: v for k, v in params.items() if k not in _input_parameters(spec)}
+        if swept_in_inputs:
+            from .sweep.task import InputExpressions
+
+            options["setup"] = InputExpressions(inputs, sorted(swept_in_inputs))
+        elif inputs:
+            options["inputs"] = inputs
         table = sweep(spec.system, over, t_end=float(t_end), initial={**spec.initial, **_kv(args.initial, "initial")},
-                      params={**spec.params, **_kv(args.param, "param")}, backend=args.backend, **common, **options)
+                      params=params, backend=args.backend, **common, **options)
     wall = time.perf_counter() - t0
     counts = table["status"].value_counts().to_dict()
     print(table.drop(columns=["run_id"]).to_string(max_rows=40))
@@ -360,6 +397,7 @@ def _parser() -> argparse.ArgumentParser:
     p.add_argument("--friction", choices=["events", "regularize"], help="treatment of sign() switches")
     p.add_argument("--param", action="append", metavar="NAME=VALUE", help="override a parameter value")
     p.add_argument("--initial", action="append", metavar="NAME=VALUE", help="override an initial value (x, x_dot)")
+    p.add_argument("--input", action="append", metavar="NAME=VALUE", help="a constant value of an input")
     p.add_argument("-q", "--quiet", action="store_true", help="do not print the equations first")
     p.add_argument("--model", choices=["rigid", "molecular"], help="greenspan-N only: the model to run")
     p.set_defaults(func=_cmd_simulate)
@@ -377,7 +415,7 @@ def _parser() -> argparse.ArgumentParser:
     p = sub.add_parser("sweep", help="run a grid or random sample of parameters/initial values, tabulate results")
     p.add_argument("spec", help=spec_help + "; or greenspan (the top's stability map over V and alpha_deg)")
     p.add_argument("--over", action="append", required=True, metavar="NAME=START:STOP:NUM",
-                   help="a swept quantity (parameter, coordinate, q_dot) and its values (or NAME=a,b,c)")
+                   help="a swept quantity (parameter, input, coordinate, q_dot) and its values (or NAME=a,b,c)")
     p.add_argument("--random", type=int, metavar="N", help="N Latin-hypercube points in the ranges instead of the grid")
     p.add_argument("--seed", type=int, default=0, help="seed of --random (default 0)")
     p.add_argument("--workers", type=int, help="worker processes (default: CPU count; 0: in this process)")
@@ -391,6 +429,7 @@ def _parser() -> argparse.ArgumentParser:
     p.add_argument("--backend", default="python", help="python (default), numba, reference or auto")
     p.add_argument("--param", action="append", metavar="NAME=VALUE", help="override a parameter value")
     p.add_argument("--initial", action="append", metavar="NAME=VALUE", help="override an initial value (x, x_dot)")
+    p.add_argument("--input", action="append", metavar="NAME=VALUE", help="a constant value of an input")
     p.add_argument("--no-progress", action="store_true", help="no progress bar")
     p.set_defaults(func=_cmd_sweep)
 

@@ -104,6 +104,10 @@ class LagrangeWarning(UserWarning):
 class UnusedParameterWarning(LagrangeWarning):
     """Values were given for declared parameters that cancel out of the equations of motion (they are
     ignored; the warning names them)."""
+class InputError(LagrangeError, TypeError):
+    """A time-varying input cannot be used as given: a callable with a signature other than ``u(t)`` or
+    ``u(t, y)``, or a route that cannot evaluate Python per step (the compiled loops, the Taylor tape, the
+    geometric integrators) asked to run a callable or sampled input (the message names the routes that can)."""
 
 
 class SymbolicTimeoutError(LagrangeError, TimeoutError):
@@ -115,6 +119,7 @@ __all__ = [
     "LagrangeError",
     "DeclarationError",
     "ParameterError",
+    "InputError",
     "InitialConditionError",
     "SingularMassMatrixError",
     "IntegrationError",

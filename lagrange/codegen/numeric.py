@@ -42,41 +42,53 @@ BACKENDS = ("python", "numba", "reference", "auto")
 
 
 def bind_parameters(eqs: Equations, params: Mapping) -> np.ndarray:
-    """Parameter values in the order of ``eqs.parameters``; keys may be symbols or names.
+    """Values for the ``p`` vector, in the order of ``eqs.numeric_parameters``; keys may be symbols or names.
 
-    Raises :class:`ParameterError` listing every missing, unknown or non-finite value.
+    ``params`` holds the parameters and a constant value for each input (``eqs.inputs``; a time-varying
+    input's slot holds any number, refilled per call by the model's schedule). Raises
+    :class:`ParameterError` listing every missing, unknown or non-finite value.
     """
     by_name = {}
     for key, value in params.items():
         name = key.name if isinstance(key, sp.Symbol) else str(key)
         by_name[name] = value
     wanted = [s.name for s in eqs.parameters]
+    inputs = [s.name for s in eqs.inputs]
     missing = [n for n in wanted if n not in by_name]
-    unknown = sorted(set(by_name) - set(wanted) - {s.name for s in eqs.rough_signs})
+    unknown = sorted(set(by_name) - set(wanted) - set(inputs) - {s.name for s in eqs.rough_signs})
     problems = []
     if missing:
         problems.append(f"missing value(s) for parameter(s) {', '.join(missing)}")
+    missing_inputs = [n for n in inputs if n not in by_name]
+    if missing_inputs:
+        from .input_values import input_help
+
+        problems.append(f"missing value(s) for input(s) {', '.join(missing_inputs)}: "
+                        f"{input_help(missing_inputs[0])} (compile takes constants; simulate any form)")
     if unknown:
         problems.append(
             f"unknown parameter(s) {', '.join(unknown)} (this system's parameters: "
             f"{', '.join(wanted) or 'none'})"
         )
     values = []
-    for n in wanted:
+    for n in wanted + inputs:
         if n in by_name:
             try:
                 raw = by_name[n]
                 v = float(sp.sympify(raw).evalf()) if isinstance(raw, (str, sp.Basic)) else float(raw)
             except (TypeError, ValueError, sp.SympifyError):
-                problems.append(f"parameter {n} = {by_name[n]!r} is not a number")
+                kind = "input" if n in inputs else "parameter"
+                extra = " (time-varying inputs are given to simulate)" if n in inputs else ""
+                problems.append(f"{kind} {n} = {by_name[n]!r} is not a number{extra}")
                 continue
             if not math.isfinite(v):
-                problems.append(f"parameter {n} = {v} is not finite")
+                problems.append(f"{'input' if n in inputs else 'parameter'} {n} = {v} is not finite")
             values.append(v)
     if problems:
         raise ParameterError("; ".join(problems))
+    k = len(wanted)
     signs = [float(by_name.get(s.name, 1.0)) for s in eqs.rough_signs]
-    return np.array(values + signs, dtype=float)
+    return np.array(values[:k] + signs + values[k:], dtype=float)
 
 
 @dataclass(frozen=True)
@@ -92,6 +104,9 @@ class NumericModel:
         constraints the whole module, including the ``field`` the compiled integrator loops call)
     dynamics : callable ``dynamics(t, y, p) -> [q̇, q̈, λ]`` (``[q̇, q̈]`` without constraints)
     rhs : callable ``rhs(t, y, p) -> [q̇, q̈]``, shape (2n,)
+    schedule : :class:`~lagrange.codegen.input_values.InputSchedule` or None — time-varying inputs: ``dynamics``
+        and ``rhs`` then overwrite the input slots of any ``p`` they are given with ``schedule(t, y)``
+        (:meth:`with_schedule`); None when every input is constant (bound in ``params``)
     """
 
     equations: Equations
@@ -101,6 +116,7 @@ class NumericModel:
     dynamics: Callable
     _aux: Callable = field(repr=False)
     _mass_forcing: Callable = field(repr=False)
+    schedule: object = None
 
     @property
     def n(self) -> int:
@@ -115,6 +131,11 @@ class NumericModel:
         # the python backend unpacks p into Python floats (fast scalar arithmetic); numba wants an array
         call = tuple(float(v) for v in self.params) if self.backend == "python" else self.params
         object.__setattr__(self, "_pcall", call)
+        raw = getattr(self.dynamics, "_lagrange_raw", self.dynamics)
+        if self.schedule is not None:
+            object.__setattr__(self, "dynamics", _scheduled(raw, self.schedule, self.equations, self.backend))
+        else:
+            object.__setattr__(self, "dynamics", raw)
         if self.equations.m:
             dyn, n2 = self.dynamics, 2 * self.n
 
@@ -129,7 +150,7 @@ class NumericModel:
         """Pickle by source: the equations, parameter values, backend and generated source travel, and the
         compiled callables are rebuilt on unpickling (``exec`` of the source for ``python``, the on-disk
         cache for ``numba``), so a model can be sent to worker processes or a Dask cluster."""
-        return (_rebuild_model, (self.equations, self.params, self.backend, self.source))
+        return (_rebuild_model, (self.equations, self.params, self.backend, self.source, self.schedule))
 
     def with_params(self, params: Mapping) -> NumericModel:
         """The same compiled code with some parameter values replaced (keys: symbols or names); cheap, no
@@ -138,6 +159,28 @@ class NumericModel:
         for key, value in params.items():
             current[key.name if isinstance(key, sp.Symbol) else str(key)] = value
         return replace(self, params=bind_parameters(self.equations, current))
+
+    def with_schedule(self, schedule) -> NumericModel:
+        """The same compiled code driven by time-varying input values (an
+        :class:`~lagrange.codegen.input_values.InputSchedule`, or None for the constants in ``params``)."""
+        return replace(self, schedule=schedule)
+
+    def parameters_at(self, t: float, y) -> list:
+        """The ``p`` vector in force at ``(t, y)``: ``params`` with the inputs' slots refilled by the schedule."""
+        p = self.params.tolist()
+        if self.schedule is not None:
+            k0 = self.equations.input_offset
+            p[k0:k0 + len(self.equations.inputs)] = self.schedule(t, np.asarray(y)[: 2 * self.n])
+        return p
+
+    def input_values(self, t, Y) -> np.ndarray:
+        """The inputs' values at output points: ``t`` shape (m,), ``Y`` shape (m, 2n) → shape (m, k), columns in
+        the order of ``equations.inputs``."""
+        t = np.atleast_1d(np.asarray(t, dtype=float))
+        k0, k = self.equations.input_offset, len(self.equations.inputs)
+        if self.schedule is not None:
+            return self.schedule.many(t, Y)
+        return np.broadcast_to(self.params[k0:k0 + k], (len(t), k)).copy()
 
     def rhs_many(self, t, Y, P=None) -> np.ndarray:
         """``dy/dt`` for many states (and parameter sets) at once, row by row.
@@ -162,7 +205,7 @@ class NumericModel:
         """
         Y, P, tt = self._many_arguments(t, Y, P)
         n2 = 2 * self.n
-        if self.backend == "numba":
+        if self.backend == "numba" and self.schedule is None:
             try:
                 return self._compiled_many(tt, Y, P)
             except ZeroDivisionError:
@@ -253,7 +296,7 @@ class NumericModel:
 
     def mass_and_forcing(self, t: float, y) -> tuple[np.ndarray, np.ndarray]:
         """Numeric ``M`` (n, n) and ``f`` (n,) at one state."""
-        M, f = self._mass_forcing(t, np.asarray(y, dtype=float), self.params)
+        M, f = self._mass_forcing(t, np.asarray(y, dtype=float), self.parameters_at(t, y))
         return np.array(M, dtype=float).reshape(self.n, self.n), np.array(f, dtype=float).reshape(self.n)
 
     def diagnostics(self, t, y) -> dict[str, np.ndarray]:
@@ -269,7 +312,11 @@ class NumericModel:
         if self.m and lam_required(self.equations):
             L = np.array([self.multipliers(ti, yi) for ti, yi in zip(t, y)]).reshape(len(t), self.m)
             lam = [L[:, k] for k in range(self.m)]
-        vals = self._aux(t, cols, self.params, lam)
+        p = list(self.params)
+        if self.schedule is not None:  # per-row input values (the aux function broadcasts arrays)
+            k0, U = self.equations.input_offset, self.schedule.many(t, y)
+            p[k0:k0 + U.shape[1]] = [U[:, j] for j in range(U.shape[1])]
+        vals = self._aux(t, cols, p, lam)
         names = ("T", "V", "jacobi", "power", "T2", "T0")
         out = {k: np.broadcast_to(np.asarray(v, dtype=float), t.shape).copy() for k, v in zip(names, vals)}
         out["energy"] = out["T"] + out["V"]
@@ -411,8 +458,32 @@ def _numba_many(rhs: Callable, n2: int) -> Callable:
     return import_module(name, path).rhs_many
 
 
-def _rebuild_model(eqs: Equations, params: np.ndarray, backend: str, source: str) -> NumericModel:
+def _scheduled(raw: Callable, schedule, eqs: Equations, backend: str) -> Callable:
+    """``raw(t, y, p)`` with the input slots of ``p`` refilled by ``schedule(t, y[:2n])`` at every call."""
+    k0, n2 = eqs.input_offset, 2 * eqs.n
+    k1 = k0 + len(eqs.inputs)
+    if backend == "python":
+        def dynamics(t_, y, p):
+            p = list(p)
+            p[k0:k1] = schedule(t_, y[:n2])
+            return raw(t_, y, p)
+    else:
+        def dynamics(t_, y, p):
+            p = np.array(p, dtype=float)
+            p[k0:k1] = schedule(t_, y[:n2])
+            return raw(t_, y, p)
+
+    dynamics._lagrange_raw = raw
+    return dynamics
+
+
+def _rebuild_model(eqs: Equations, params: np.ndarray, backend: str, source: str, schedule=None) -> NumericModel:
     """A NumericModel from its generated source: the unpickling path of :meth:`NumericModel.__reduce__`."""
+    model = _rebuild(eqs, params, backend, source)
+    return model if schedule is None else model.with_schedule(schedule)
+
+
+def _rebuild(eqs: Equations, params: np.ndarray, backend: str, source: str) -> NumericModel:
     aux = _Lazy(lambda: _aux_function(eqs))
     mass_forcing = _Lazy(lambda: _reference_functions(eqs)[1])
     if backend == "reference":
@@ -426,11 +497,13 @@ def _rebuild_model(eqs: Equations, params: np.ndarray, backend: str, source: str
 
 
 def compile_equations(eqs: Equations, params: Mapping, *, backend: str = "python",
-                      constraint_rhs=None) -> NumericModel:
+                      constraint_rhs=None, inputs: Mapping | None = None) -> NumericModel:
     """Generate numeric code for ``eqs`` and bind ``params``.
 
     ``constraint_rhs`` replaces ``c`` in ``A q̈ = c`` (Baumgarte stabilization,
-    :func:`lagrange.integrate.constrained.baumgarte_rhs`).
+    :func:`lagrange.integrate.constrained.baumgarte_rhs`). ``inputs``: a constant for each of ``eqs.inputs``
+    (keys: symbols or names), bound as the last entries of ``p``; time-varying values go to
+    :func:`lagrange.integrate.run.simulate` (or :meth:`NumericModel.with_schedule`).
 
     Raises
     ------
@@ -441,7 +514,7 @@ def compile_equations(eqs: Equations, params: Mapping, *, backend: str = "python
     """
     if backend not in BACKENDS:
         raise BackendError(f"unknown backend {backend!r}; choose one of {', '.join(BACKENDS)}")
-    p = bind_parameters(eqs, params)
+    p = bind_parameters(eqs, {**params, **dict(inputs or {})})
     if backend == "auto":
         backend = "numba" if importlib.util.find_spec("numba") else "python"
     aux = _Lazy(lambda: _aux_function(eqs))

@@ -34,6 +34,8 @@ class Equations:
         term is the power of moving constraints and contains the multiplier symbols)
     constraint_* : the velocity-level constraints ``A q̇ + b = 0``, their derivative ``A q̈ = c`` and, for
         holonomic ones, ``φ(q, t) = 0``; ``multipliers`` are the λ with ``M q̈ = f + Aᵀλ``
+    inputs : tuple of :class:`~lagrange.model.inputs.Input` symbols, sorted by name — time-varying inputs
+        (in f, the forces and ``jacobi_rate`` only), not parameters: the last entries of ``p``
     """
 
     coordinates: tuple
@@ -66,6 +68,7 @@ class Equations:
     reaction_matrix: sp.ImmutableMatrix = sp.ImmutableMatrix(0, 0, [])  # B (n, m): M q̈ = f + Bλ; Aᵀ unless rough
     rough_signs: tuple = ()  # σ_k = sign(λ_k)·sign(v_s,k) symbols of rough constraints (bound per segment)
     sliding_velocities: tuple = ()  # ((k, v_s,k), ...) for rough constraints
+    inputs: tuple = ()  # u_k symbols: time-varying inputs, given at compile/simulate time
 
     def __hash__(self) -> int:
         """The hash of the fields, computed once: Equations key per-model caches (tapes, switches), and hashing
@@ -95,8 +98,15 @@ class Equations:
     @property
     def numeric_parameters(self) -> tuple:
         """Symbols bound to the ``p`` vector of generated code: the parameters, then the per-segment
-        friction signs of rough constraints (default +1)."""
-        return self.parameters + self.rough_signs
+        friction signs of rough constraints (default +1), then the inputs (:attr:`input_offset` on; a
+        time-varying input's slots are refilled at every evaluation, see
+        :mod:`lagrange.codegen.input_values`)."""
+        return self.parameters + self.rough_signs + self.inputs
+
+    @property
+    def input_offset(self) -> int:
+        """Index of the first input in the ``p`` vector (the inputs are its last ``len(inputs)`` entries)."""
+        return len(self.parameters) + len(self.rough_signs)
 
     @property
     def is_rough(self) -> bool:

@@ -29,6 +29,7 @@ from ..model.coordinates import (
     to_symbols,
     velocity_symbol,
 )
+from ..model.inputs import Input
 from ..simplification import is_zero
 from ..symengine_bridge import FAILURES, Restorer, carries, symengine
 from .equations import Equations
@@ -99,6 +100,8 @@ def lagrange_equations(system) -> Equations:
     everything += [to_symbols(c.position, coords) for c in system.constraints if c.position is not None]
     everything += [to_symbols(sp.Matrix(c.friction), coords) for c in system.constraints if c.friction]
     params = set().union(*(e.free_symbols for e in everything)) - internal
+    inputs = {s for s in params if isinstance(s, Input)}
+    params -= inputs
     return Equations(
         coordinates=tuple(coords),
         q=q,
@@ -120,6 +123,7 @@ def lagrange_equations(system) -> Equations:
         jacobi_rate=jacobi_rate,
         name=system.name,
         **blocks,
+        inputs=tuple(sorted(inputs, key=lambda s: s.name)),
     )
 
 

@@ -96,8 +96,10 @@ def _numba_available() -> bool:
     return importlib.util.find_spec("numba") is not None
 
 
-def unsupported(eqs, method: str, *, events, switches) -> str | None:
+def unsupported(eqs, method: str, *, events, switches, varying_inputs: bool = False) -> str | None:
     """Why the compiled loop cannot run this problem (None when it can)."""
+    if varying_inputs:
+        return "time-varying inputs (callables or samples; constant inputs are supported)"
     if method not in LOOP_METHODS:
         return f"method {method!r} (the compiled loop has {', '.join(LOOP_METHODS)})"
     if events:
@@ -124,8 +126,8 @@ def loop_backend(loop: str, *, backend: str, model: NumericModel | None) -> str:
     return ("numba" if _numba_available() else "python") if backend == "auto" else backend
 
 
-def choose_loop(loop: str, *, backend: str, model: NumericModel | None, eqs, method: str, events, switches
-                ) -> tuple[bool, str]:
+def choose_loop(loop: str, *, backend: str, model: NumericModel | None, eqs, method: str, events, switches,
+                varying_inputs: bool = False) -> tuple[bool, str]:
     """``(use the compiled loop?, note for the method label)`` for ``simulate(loop=...)``.
 
     ``backend`` is the requested backend (used when ``model`` is None). Raises :class:`TypeError` for an
@@ -135,7 +137,7 @@ def choose_loop(loop: str, *, backend: str, model: NumericModel | None, eqs, met
     effective = loop_backend(loop, backend=backend, model=model)
     if loop == "scipy":
         return False, "scipy loop" if effective == "numba" else ""
-    why = unsupported(eqs, method, events=events, switches=switches)
+    why = unsupported(eqs, method, events=events, switches=switches, varying_inputs=varying_inputs)
     if loop == "compiled":
         if effective == "reference" or (model is not None and effective != "numba"):
             raise BackendError(f"loop='compiled' runs generated numba code, but the model's backend is "

@@ -17,9 +17,17 @@ from scipy.integrate import solve_ivp
 from scipy.linalg.lapack import dsyev
 
 from ..codegen.cse import numeric_arguments, rename_map
+from ..codegen.input_values import VARYING_ROUTES, resolve_inputs
 from ..codegen.numeric import NumericModel, compile_equations, lam_required
 from ..conventions import VELOCITY_SUFFIX
-from ..errors import InitialConditionError, IntegrationError, LagrangeError, SingularMassMatrixError
+from ..errors import (
+    InitialConditionError,
+    InputError,
+    IntegrationError,
+    LagrangeError,
+    ParameterError,
+    SingularMassMatrixError,
+)
 from ..model.coordinates import coordinate_name, is_coordinate, state_text
 from ..results.trajectory import Trajectory
 from .constrained import STABILIZATIONS, Projector, baumgarte_rhs, consistent_initial
@@ -112,7 +120,8 @@ def _taylor_ready(eqs) -> bool:
 
 
 def choose_method(eqs, params=None, t_span=(0.0, 1.0), y0=None, rtol: float | None = None, *,
-                  backend: str | None = None, events: bool = False) -> tuple[str, str]:
+                  backend: str | None = None, events: bool = False, varying_inputs: bool = False
+                  ) -> tuple[str, str]:
     """A sensible method and the reason (``method="auto"``).
 
     From the Jacobian's eigenvalues at the initial state: a fast decay (rate × horizon > 10³) much faster
@@ -124,7 +133,8 @@ def choose_method(eqs, params=None, t_span=(0.0, 1.0), y0=None, rtol: float | No
     in C is here (it loads in a millisecond, and its steps run compiled while scipy's DOP853 loop runs in
     Python: 4–70× faster at equal rtol in the benchmark, and more accurate), otherwise when ``rtol ≤ 1e-11`` (and a C
     compiler or numba can run the tape), where its order grows with the accuracy at an unchanged step
-    (measured in ``benchmarks/results/workprecision.md``).
+    (measured in ``benchmarks/results/workprecision.md``). With ``varying_inputs`` (callable or sampled input
+    values, evaluated in Python per step) never the Taylor method, whose tape holds only constants.
     """
     horizon = abs(float(t_span[1]) - float(t_span[0]))
     st = _stiffness(eqs, params, t_span, y0)
@@ -134,7 +144,8 @@ def choose_method(eqs, params=None, t_span=(0.0, 1.0), y0=None, rtol: float | No
     if eqs.power_function != 0 or eqs.rayleigh != 0:
         return "LSODA", "dissipation present (P or rayleigh): possibly stiff later, LSODA switches to BDF if so"
     python_model = backend in ("python", "reference")
-    if not events and (python_model or (rtol is not None and rtol <= 1e-11)) and _taylor_ready(eqs):
+    taylor_wanted = python_model or (rtol is not None and rtol <= 1e-11)
+    if not events and not varying_inputs and taylor_wanted and _taylor_ready(eqs):
         from .taylor import interpreter, taylor_order
 
         order = taylor_order(rtol if rtol is not None else 1e-9)
@@ -154,6 +165,8 @@ def _power_function(model: NumericModel):
     tt, ys, ps = numeric_arguments(eqs)
     f = sp.lambdify((tt, ys, ps, list(eqs.multipliers)), eqs.jacobi_rate.xreplace(ren), modules="math", cse=True)
     p = list(model.params)
+    if model.schedule is not None:  # the inputs' power at their values now
+        return lambda t_, y, lam=(): f(t_, y, model.parameters_at(t_, y), list(lam) + [0.0] * (eqs.m - len(lam)))
     return lambda t_, y, lam=(): f(t_, y, p, list(lam) + [0.0] * (eqs.m - len(lam)))
 
 
@@ -279,8 +292,8 @@ def _with_partial(exc: LagrangeError, model: NumericModel, log: StepLog, conserv
 def _jacobian(model: NumericModel, method: str, conservative: bool):
     """The generated Jacobian for implicit methods (unconstrained systems; scipy's finite differences
     otherwise)."""
-    if method not in IMPLICIT_METHODS or model.m:
-        return None
+    if method not in IMPLICIT_METHODS or model.m or model.schedule is not None:
+        return None  # (a feedback input's ∂u/∂y is not in the generated Jacobian: scipy's differences)
     jy = jacobian_function(model)
     if conservative:
         return jy
@@ -364,17 +377,44 @@ def _check_initial_mass_matrix(system, model: NumericModel, t0: float, y0) -> No
                           f"{cond:.2g}).{hint}", GimbalLockWarning, stacklevel=3)
 
 
-def _model_for(eqs, params, model: NumericModel | None, backend: str, crhs=None) -> NumericModel:
+def _model_for(eqs, params, model: NumericModel | None, backend: str, crhs=None, *, inputs: dict | None = None,
+               schedule=None) -> NumericModel:
     """``model`` when it was built for ``eqs`` (and no Baumgarte ``crhs`` is asked for), else ``eqs`` compiled
-    with ``params`` and ``backend`` — or with the given model's parameter values and backend."""
+    with ``params`` and ``backend`` — or with the given model's parameter values and backend; then the input
+    constants ``inputs`` ({name: value}) bound and the ``schedule`` of the time-varying ones attached."""
     if model is not None and model.equations is eqs and crhs is None:
-        return model
-    p = params if model is None else dict(zip(eqs.numeric_parameters, model.params))
-    return compile_equations(eqs, p, backend=backend if model is None else model.backend, constraint_rhs=crhs)
+        out = model.with_params(inputs) if inputs else model
+    else:
+        p = params if model is None else {**dict(zip(eqs.numeric_parameters, model.params)), **(inputs or {})}
+        out = compile_equations(eqs, p, backend=backend if model is None else model.backend, constraint_rhs=crhs)
+    return out if out.schedule is schedule else out.with_schedule(schedule)
+
+
+def _refuse_route(route: str, schedule) -> None:
+    """InputError when ``route`` cannot evaluate the time-varying inputs of ``schedule``."""
+    if schedule is not None:
+        raise InputError(f"{route} cannot run time-varying inputs ({schedule.describe()}): it does not call Python "
+                         f"per step, so it supports constant inputs only. Time-varying inputs run with "
+                         f"{VARYING_ROUTES}")
+
+
+def _split_inputs(eqs, params: Mapping, inputs, t_span, y0) -> tuple[dict, dict, object]:
+    """``(params with the inputs' constants, those constants, the schedule of the varying ones)``; refuses an
+    input given among the parameters."""
+    names = {u.name for u in eqs.inputs}
+    given = [k.name if isinstance(k, sp.Symbol) else str(k) for k in params]
+    wrong = [k for k in given if k in names]
+    if wrong:
+        raise ParameterError(f"{', '.join(wrong)} {'is an input' if len(wrong) == 1 else 'are inputs'}, not "
+                             f"parameter(s): give the value(s) as simulate(..., inputs={{'{wrong[0]}': ...}})")
+    if not eqs.inputs and not inputs:
+        return dict(params), {}, None
+    constants, schedule = resolve_inputs(eqs, inputs, t_span, y0)
+    return {**params, **constants}, constants, schedule
 
 
 def _simulate_taylor(system, eqs, t_span, initial, params, *, model, backend, t_eval, n_points, rtol, atol,
-                     max_step, events, switches, why) -> Trajectory:
+                     max_step, events, switches, why, constants=None, schedule=None) -> Trajectory:
     """``method="taylor"`` (:mod:`lagrange.integrate.taylor`): checks, model, initial state, run."""
     from .taylor import integrate_taylor, interpreter
 
@@ -383,7 +423,8 @@ def _simulate_taylor(system, eqs, t_span, initial, params, *, model, backend, t_
     if switches:
         raise TypeError("method='taylor' needs analytic equations, and this system has dry-friction sign() "
                         "switches: use method='DOP853' (events) or friction='regularize' with an RK method")
-    model = _model_for(eqs, params, model, backend)
+    _refuse_route("method='taylor' (its tape holds constants only)", schedule)
+    model = _model_for(eqs, params, model, backend, inputs=constants)
     y0 = initial_state(eqs.coordinates, initial)
     _check_initial_mass_matrix(system, model, t_span[0], y0)
     t_eval = np.linspace(t_span[0], t_span[1], n_points) if t_eval is None else t_eval
@@ -410,6 +451,7 @@ def simulate(
     max_step: float = np.inf,
     backend: str = "python",
     model: NumericModel | None = None,
+    inputs: Mapping | None = None,
     friction: str = "events",
     friction_epsilon: float = 1e-6,
     stabilization: str = "projection",
@@ -425,6 +467,14 @@ def simulate(
     t_span : (t0, t1) or a number t1 (then t0 = 0)
     initial : dict keyed by coordinates, their velocities (``q.diff(t)``) or names (``"q"``, ``"q_dot"``)
     params : dict of parameter values keyed by symbol or name
+    inputs : dict ``{input or name: value}``, one value for each input of the system
+        (:mod:`lagrange.model.inputs`): a number, a function ``u(t)``, a feedback law ``u(t, y)`` of the state
+        ``y = [q, q̇]``, samples ``(t_samples, values)`` (interpolated linearly) or an expression of ``t``; see
+        :mod:`lagrange.codegen.input_values`. Constants run on every route; time-varying values need a route
+        that calls Python per step (the scipy methods: ``method="auto"`` picks one and ``loop="auto"`` the
+        scipy loop); the compiled loops and ``method="taylor"`` refuse them, the geometric methods refuse
+        inputs (an input does work: not a conservative system). The trajectory gives the values (``sol[u]``)
+        and its power balance includes the inputs' power.
     method : one of ``DOP853`` (default), ``RK45``, ``RK23``, ``LSODA``, ``Radau``, ``BDF`` or ``auto``
         (the implicit ones get the generated Jacobian), ``taylor`` (adaptive Taylor series of order
         ``ceil(−ln(rtol)/2 + 1)`` for unconstrained analytic systems: nothing compiled per model with the
@@ -464,7 +514,10 @@ def simulate(
     Raises
     ------
     InitialConditionError, ParameterError
-        Missing or bad inputs (all listed).
+        Missing or bad initial values, parameters or input values (all listed).
+    InputError
+        An input callable that is neither ``u(t)`` nor ``u(t, y)``, or time-varying inputs on a route that
+        cannot evaluate them.
     SingularMassMatrixError
         The mass matrix is singular at the initial state, or becomes singular during the run (the
         coordinates involved are named; during a run also ``t``, ``state`` and ``partial``).
@@ -497,13 +550,21 @@ def simulate(
         switches = []
     if switches and eqs.m:
         raise TypeError("sign() switches (dry friction) with constraints: use friction='regularize'")
+    params, constants, schedule = _split_inputs(eqs, params, inputs, (t0, t1), initial_state(eqs.coordinates,
+                                                                                              initial))
     why = ""
     if method == "auto":
         method, why = choose_method(eqs, params, (t0, t1), initial_state(eqs.coordinates, initial), rtol=rtol,
-                                    backend=backend if model is None else model.backend, events=bool(events))
+                                    backend=backend if model is None else model.backend, events=bool(events),
+                                    varying_inputs=schedule is not None)
     from .fixed import GEOMETRIC, fixed_loop, integrate_fixed
 
     if method in GEOMETRIC:
+        if eqs.inputs:
+            raise InputError(f"method={method!r} (a geometric integrator) cannot run inputs "
+                             f"({', '.join(u.name for u in eqs.inputs)}): an input does work on the system, which "
+                             "then has no Hamiltonian structure to preserve; use a scipy method (DOP853, ...) or "
+                             "'auto'")
         if t_eval is not None or events:
             raise TypeError(f"{method} is a fixed-step integrator: it takes step= and n_points=, not t_eval/events")
         compiled = fixed_loop(loop, backend=backend, model=model)
@@ -513,7 +574,7 @@ def simulate(
     if method == "taylor":
         return _simulate_taylor(system, eqs, (t0, t1), initial, params, model=model, backend=backend, t_eval=t_eval,
                                 n_points=n_points, rtol=rtol, atol=atol, max_step=max_step, events=events,
-                                switches=switches, why=why)
+                                switches=switches, why=why, constants=constants, schedule=schedule)
     if method not in SCIPY_METHODS:
         raise TypeError(f"unknown method {method!r}; choose one of {', '.join(SCIPY_METHODS)}, 'taylor', "
                         f"{', '.join(GEOMETRIC)} (fixed step) or 'auto'")
@@ -524,13 +585,15 @@ def simulate(
                      "stabilization instead of projection")
     from .compiled import choose_loop, integrate_compiled
 
+    if loop == "compiled":
+        _refuse_route("loop='compiled' (the compiled numba RK loops)", schedule)
     use_compiled, loop_note = choose_loop(loop, backend=backend, model=model, eqs=eqs, method=method,
-                                          events=events, switches=switches)
+                                          events=events, switches=switches, varying_inputs=schedule is not None)
     if use_compiled and model is None:
         backend = "numba"
     notes += [loop_note] if loop_note else []
     crhs = baumgarte_rhs(eqs, *baumgarte) if eqs.m and stabilization == "baumgarte" else None
-    model = _model_for(eqs, params, model, backend, crhs)
+    model = _model_for(eqs, params, model, backend, crhs, inputs=constants, schedule=schedule)
     y0 = initial_state(eqs.coordinates, initial)
     initial_report = {}
     if eqs.m:

@@ -53,7 +53,7 @@ from scipy.integrate import solve_ivp
 from ..codegen.cse import numeric_arguments, rename_map
 from ..conventions import t
 from ..derive.equations import Equations
-from ..errors import IntegrationError
+from ..errors import InputError, IntegrationError
 
 __all__ = ["switching_functions", "regularized_equations", "switched_equations", "run_switched", "Transition"]
 
@@ -130,23 +130,49 @@ class _Switched:
 
         eqs0 = model.equations
         eqs, sigmas = switched_equations(eqs0, switches)
-        base = dict(zip(eqs0.parameters, model.params))
+        if model.schedule is not None:
+            varying = {u for u, kind in zip(model.schedule.inputs, model.schedule.kinds) if kind != "constant"}
+            inside = sorted({str(u) for u in varying for w in switches if u in w.free_symbols})
+            if inside:
+                raise InputError(f"the dry-friction switch sign() of {', '.join(map(str, switches))} contains the "
+                                 f"time-varying input(s) {', '.join(inside)}: locating its sign changes needs the "
+                                 "input's rate; use friction='regularize' or a constant input")
+        base = dict(zip(eqs0.numeric_parameters, model.params))  # parameters and input constants
         backend = model.backend if model.backend != "reference" else "python"
         self.model = compile_equations(eqs, {**base, **{s: 1.0 for s in sigmas}}, backend=backend)
+        self.model = self.model.with_schedule(model.schedule) if model.schedule is not None else self.model
         self.eqs, self.K, self.n2, self.nparam = eqs, len(switches), 2 * eqs.n, len(eqs0.parameters)
         ren = rename_map(eqs)
         tt, ys, ps = numeric_arguments(eqs)  # switched eqs carry the σ's among their parameters
         # switching functions may contain parameters (a belt speed): evaluated with the σ-free parameter values
-        self._p_u = np.concatenate([model.params, np.ones(self.K)])
+        self._p_u = np.array(self.model.params, dtype=float)  # σ's at 1, the inputs' constants after them
         self._u = sp.lambdify((tt, ys, ps), [u.xreplace(ren) for u in switches], modules="math")
         grad = [[sp.diff(u, s).xreplace(ren) for s in (*eqs.q, *eqs.qd, t)] for u in switches]
         self._grad = sp.lambdify((tt, ys, ps), grad, modules="math")
 
     def power_function(self):
-        """``(t, y, p, λ) ↦`` power of the non-conservative forces (the work integrand)."""
+        """``(t, y, p, λ) ↦`` power of the non-conservative forces (the work integrand; time-varying inputs at
+        their values at (t, y))."""
         tt, ys, ps = numeric_arguments(self.eqs)
         rate = self.eqs.jacobi_rate.xreplace(rename_map(self.eqs))
-        return sp.lambdify((tt, ys, ps, list(self.eqs.multipliers)), rate, modules="math", cse=True)
+        f = sp.lambdify((tt, ys, ps, list(self.eqs.multipliers)), rate, modules="math", cse=True)
+        schedule = self.model.schedule
+        if schedule is None:
+            return f
+        k0, k = self.eqs.input_offset, len(self.eqs.inputs)
+
+        def power(t_, y, p, lam):
+            p = list(p)
+            p[k0:k0 + k] = schedule(t_, y)
+            return f(t_, y, p, lam)
+
+        return power
+
+    def params_with(self, modes) -> np.ndarray:
+        """The parameter vector with the σ's set to ``modes`` (inputs' slots kept)."""
+        p = np.array(self.model.params, dtype=float)
+        p[self.nparam:self.nparam + self.K] = modes
+        return p
 
     def u(self, t_, y) -> list:
         return self._u(t_, list(y), self._p_u)
@@ -198,7 +224,7 @@ def _initial_modes(sw: _Switched, t0, y0, eta) -> list:
     scale = 1.0 + float(np.max(np.abs(y0)))
     u0 = sw.u(t0, y0)
     modes = [_STICK] * sw.K
-    p = np.concatenate([sw.model.params[: sw.nparam], np.ones(sw.K)])
+    p = sw.params_with(np.ones(sw.K))
     for k in range(sw.K):
         if abs(u0[k]) > 1e-9 * scale:
             modes[k] = int(math.copysign(1.0, u0[k]))
@@ -244,7 +270,7 @@ def run_switched(model, switches, t_span, z0, t_eval, events, kwargs, with_work)
     transitions = [Transition(float(t0), k, "", _MODE_NAMES[m]) for k, m in enumerate(modes)]
     for _segment in range(_MAX_SEGMENTS):
         stuck = [k for k in range(sw.K) if modes[k] == _STICK]
-        p = np.concatenate([sw.model.params[: sw.nparam], np.array(modes, dtype=float)])
+        p = sw.params_with(np.array(modes, dtype=float))
 
         def params_at(t_, y_, _p=p, _stuck=stuck):
             return sw.solve_stuck(t_, y_, _p, _stuck)
@@ -259,7 +285,7 @@ def run_switched(model, switches, t_span, z0, t_eval, events, kwargs, with_work)
         for ti, zi in zip(res.t, ys.T):
             out_t.append(ti)
             out_z.append(zi)
-            out_sig.append(params_at(ti, zi[: sw.n2])[sw.nparam:].copy())
+            out_sig.append(params_at(ti, zi[: sw.n2])[sw.nparam:sw.nparam + sw.K].copy())
         fired, user_stop = _collect_events(res, sw.K, user_events, t_events, y_events)
         if res.status == 0 or user_stop or fired is None:
             break

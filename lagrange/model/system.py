@@ -25,6 +25,7 @@ from .bodies import Body
 from .constraints import Differential, Holonomic, Nonholonomic, normalize_constraints
 from .coordinates import coordinate_name, is_coordinate, virtual_displacement
 from .forces import generalized_forces
+from .inputs import Input, inputs_in
 from .integrals import evaluate_integrals
 
 if TYPE_CHECKING:
@@ -142,6 +143,13 @@ class System:
         coords = _as_coordinate_tuple(coordinates)
         bad = [c for c in coords if not is_coordinate(c)]
         for c in bad:
+            if isinstance(c, Input):
+                problems.append(
+                    f"{c} is an input (lagrange.inputs), not a coordinate: an input is a value given at "
+                    "simulate time (simulate(..., inputs={...})); declare a degree of freedom with "
+                    "lagrange.coordinates"
+                )
+                continue
             problems.append(
                 f"{c!r} is not a coordinate: declare coordinates with lagrange.coordinates('q1 q2'), "
                 "which gives functions of lagrange.t"
@@ -211,6 +219,7 @@ class System:
                 if spec.velocity.has(sp.Integral):
                     problems.append(f"constraint {spec.name} contains an integral: give it in closed form")
                 self._check_expr(spec.name, spec.velocity, coords, presc, 1, problems, parameters)
+        _check_inputs(T_total, V_e, specs, presc, P_e, D_e, F, coords, problems)
         self._check_expr("T", T_total, coords, presc, 1, problems, parameters)
         self._check_expr("V", V_e, coords, presc, 0, problems, parameters)
         self._check_expr("P", P_e, coords, presc, 1, problems, parameters)
@@ -281,6 +290,8 @@ class System:
                     f"{what} contains a symbol 't' that is not lagrange.t (different assumptions); "
                     "use lagrange.t for time"
                 )
+            elif isinstance(s, Input):
+                continue  # an input: given at simulate time, never a parameter (names checked in _check_inputs)
             elif s.name in reserved:
                 problems.append(
                     f"{what} contains the plain symbol {s.name!r}, which clashes with coordinate "
@@ -305,6 +316,12 @@ class System:
     def derived(self) -> Equations:
         """The derived equations object (normal form ``M q̈ = f`` in plain symbols)."""
         return self._equations
+
+    @property
+    def inputs(self) -> tuple:
+        """The :class:`~lagrange.model.inputs.Input` symbols of the declaration, sorted by name: each needs a
+        value at simulate time (``simulate(..., inputs={u: ...})``)."""
+        return self._equations.inputs
 
     @property
     def parameters(self) -> tuple:
@@ -422,7 +439,7 @@ class System:
 
         params = dict(params or {})
         used = {s.name for s in self._equations.numeric_parameters}
-        declared = {s.name for s in self.declared_symbols}
+        declared = {s.name for s in self.declared_symbols if not isinstance(s, Input)}
         if self._declared_parameters is not None:
             declared |= {s.name for s in self._declared_parameters}
         out, dropped = {}, []
@@ -438,15 +455,17 @@ class System:
         return out
 
     # --- numbers ------------------------------------------------------------------------------
-    def compile(self, params: Mapping | None = None, *, backend: str = "python") -> NumericModel:
+    def compile(self, params: Mapping | None = None, *, backend: str = "python",
+                inputs: Mapping | None = None) -> NumericModel:
         """Generate numeric code for ``M q̈ = f`` with parameters bound to ``params``.
 
-        Values of declared parameters that cancel out are ignored with a warning (:meth:`bindable`). See
-        :func:`lagrange.codegen.numeric.compile_equations`.
+        Values of declared parameters that cancel out are ignored with a warning (:meth:`bindable`).
+        ``inputs``: a constant value for each input of the system (:attr:`inputs`); time-varying values are
+        given to :meth:`simulate`, which replaces these. See :func:`lagrange.codegen.numeric.compile_equations`.
         """
         from ..codegen.numeric import compile_equations
 
-        return compile_equations(self._equations, self.bindable(params), backend=backend)
+        return compile_equations(self._equations, self.bindable(params), backend=backend, inputs=inputs)
 
     def multipliers_at(self, state: Mapping, params: Mapping | None = None, *, t: float = 0.0) -> dict:
         """``{constraint name: λ}`` at one state, as :meth:`Trajectory.multiplier
@@ -517,6 +536,37 @@ class System:
         from ..printing import latex_equations
 
         return latex_equations(self)
+
+
+def _check_inputs(T, V, specs, presc, P, D, F, coords, problems) -> None:
+    """Inputs may drive the system through forces, P and the Rayleigh function only (see
+    :mod:`lagrange.model.inputs`): T, V, constraints and prescribed motions are differentiated in time, which
+    would need the input's derivative. Also: an input named like a coordinate, a velocity or a parameter."""
+    fix = "put the input's generalized force in forces (a potential V(q, u) gives F_q = -dV/dq)"
+    for what, expr in (("T", T), ("V", V)):
+        for u in sorted(inputs_in([expr]), key=str):
+            problems.append(f"{what} contains the input {u}: {what} is differentiated in time (d/dt dT/dq_dot, "
+                            f"the power balance's dL/dt), which would need du/dt; {fix}")
+    for spec in specs:
+        found = inputs_in([spec.velocity] + ([spec.position] if spec.position is not None else []))
+        for u in sorted(found, key=str):
+            problems.append(f"constraint {spec.name} contains the input {u}: constraints are differentiated in "
+                            "time (A q_ddot = c needs du/dt); a motion given in time is a prescribed motion "
+                            "(prescribed={q: expression of t}) or a time-dependent constraint")
+    for key, val in presc.items():
+        for u in sorted(inputs_in([val]), key=str):
+            problems.append(f"prescribed motion of {coordinate_name(key)} contains the input {u}: a prescribed "
+                            "motion is differentiated twice; give it as an expression of t")
+    names = {coordinate_name(q) for q in coords}
+    used = inputs_in([P, D, *F.values()])
+    others = set().union(*(sp.sympify(e).free_symbols for e in (T, V, P, D, *F.values())))
+    clash_params = {s.name for s in others if not isinstance(s, Input)}
+    for u in sorted(used, key=str):
+        if u.name in names or u.name.removesuffix(VELOCITY_SUFFIX) in names:
+            problems.append(f"the input {u} is named like a coordinate or velocity of this system: an input is not "
+                            "a coordinate; rename it")
+        elif u.name in clash_params:
+            problems.append(f"the input {u} and a parameter share the name {u.name!r}: rename one of them")
 
 
 def _substitute_constraint(c, presc):

@@ -77,13 +77,19 @@ class Trajectory:
 
     def _column(self, key) -> int | str:
         n = self.model.n
+        inputs = self.model.equations.inputs
         if isinstance(key, str):
             names = self.names
             if key in names:
                 return names.index(key)
             if key.endswith("_ddot") and key[:-5] in names[:n]:
                 return ("acc", names.index(key[:-5]))  # type: ignore[return-value]
-            raise KeyError(f"{key!r} is not a coordinate or velocity of this trajectory ({', '.join(names)})")
+            if key in [u.name for u in inputs]:
+                return ("input", [u.name for u in inputs].index(key))  # type: ignore[return-value]
+            raise KeyError(f"{key!r} is not a coordinate, velocity or input of this trajectory "
+                           f"({', '.join(names + [u.name for u in inputs])})")
+        if isinstance(key, sp.Symbol) and key in inputs:
+            return ("input", inputs.index(key))  # type: ignore[return-value]
         if is_coordinate(key) and key in self.coordinates:
             return self.coordinates.index(key)
         if isinstance(key, sp.Derivative) and key.expr in self.coordinates:
@@ -96,11 +102,20 @@ class Trajectory:
         raise KeyError(f"{key!r} is not a coordinate, velocity or acceleration of this trajectory")
 
     def __getitem__(self, key) -> np.ndarray:
-        """``sol[theta]``, ``sol[theta.diff(t)]``, ``sol[theta.diff(t, 2)]`` or by name ``sol["theta_dot"]``."""
+        """``sol[theta]``, ``sol[theta.diff(t)]``, ``sol[theta.diff(t, 2)]``, an input ``sol[u]`` (its values at
+        the output times) or by name ``sol["theta_dot"]``, ``sol["u"]``."""
         col = self._column(key)
         if isinstance(col, tuple):
+            if col[0] == "input":
+                return self.input_values[:, col[1]]
             return self.accelerations[:, col[1]]
         return self.y[:, col]
+
+    @cached_property
+    def input_values(self) -> np.ndarray:
+        """The inputs' values at every output time, shape (m, k), columns in the order of
+        ``model.equations.inputs`` (empty second axis without inputs); ``sol[u]`` is one column."""
+        return self.model.input_values(self.t, self.y)
 
     @cached_property
     def accelerations(self) -> np.ndarray:
@@ -108,7 +123,9 @@ class Trajectory:
         n = self.model.n
         if self.switches:
             sw_model, sigma = self.switches[:2]
-            rows = [sw_model.rhs(ti, yi, np.concatenate([self.model.params, si])).__getitem__(slice(n, None))
+            k = len(self.model.equations.parameters)  # p = [parameters, σ's, inputs]
+            p, pin = self.model.params[:k], self.model.params[k:]
+            rows = [sw_model.rhs(ti, yi, np.concatenate([p, si, pin])).__getitem__(slice(n, None))
                     for ti, yi, si in zip(self.t, self.y, sigma)]
         else:
             rows = [self._model_at(i).fun(ti, yi)[n:] for i, (ti, yi) in enumerate(zip(self.t, self.y))]
@@ -207,15 +224,19 @@ class Trajectory:
 
     # --- export -------------------------------------------------------------------------------
     def to_csv(self, path: str | Path) -> Path:
-        """Write ``t``, the state columns and the diagnostics to a CSV file."""
+        """Write ``t``, the state columns, the inputs' values (when the system has inputs) and the diagnostics to
+        a CSV file."""
         path = Path(path)
         d = self.diagnostics
+        U = self.input_values
         with path.open("w", newline="") as fh:
             w = csv.writer(fh)
-            w.writerow(["t", *self.names, "energy", "jacobi", "power_balance"])
+            w.writerow(["t", *self.names, *(u.name for u in self.model.equations.inputs), "energy", "jacobi",
+                        "power_balance"])
             pb = self.power_balance()
             for i in range(len(self.t)):
                 w.writerow([repr(float(self.t[i])), *(repr(float(v)) for v in self.y[i]),
+                            *(repr(float(v)) for v in U[i]),
                             repr(float(d["energy"][i])), repr(float(d["jacobi"][i])), repr(float(pb[i]))])
         return path
 

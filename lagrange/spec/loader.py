@@ -25,6 +25,17 @@ TOML spec format
     [simulate]
     t_end = 10
 
+A spec may declare time-varying inputs (:mod:`lagrange.model.inputs`) by name and give each a value — a
+number or an expression of ``t`` and the parameters — in ``[inputs_values]`` (overridden by the CLI's
+``--input NAME=VALUE``); an input without a value is refused when the system is simulated:
+
+.. code-block:: toml
+
+    inputs = ["F"]
+    forces = {x = "F"}
+    [inputs_values]
+    F = "F0*cos(w*t)"
+
 Velocities are written ``<coordinate>_dot``. Expressions go through
 :func:`lagrange.spec.expressions.parse_expression`: a TOML spec never executes code. Every other value is
 checked too: names must be ASCII identifiers that are not Python keywords and do not clash (a parameter
@@ -34,7 +45,8 @@ expressions (``"pi/4"``) for declared names only; ``[simulate]`` takes ``t_end``
 file and the key.
 
 A Python spec is a file that defines ``system`` (a :class:`~lagrange.System`) and optionally
-``params``, ``initial`` and ``t_end`` — or ``PROBLEM``. **It is executed as Python code**: load only
+``params``, ``initial``, ``inputs`` (any value form of ``simulate``)
+and ``t_end`` — or ``PROBLEM``. **It is executed as Python code**: load only
 files you trust.
 """
 
@@ -52,13 +64,14 @@ from ..errors import LagrangeError, SpecError
 from ..model.bodies import Particle
 from ..model.coordinates import coordinates as make_coordinates
 from ..model.coordinates import parameters as make_parameters
+from ..model.inputs import inputs as make_inputs
 from ..model.system import System
 from .expressions import MAX_TERMS, parse_expression
 
 __all__ = ["LoadedSpec", "load_spec", "load_toml"]
 
 _TOML_KEYS = {"name", "description", "coordinates", "parameters", "T", "V", "P", "rayleigh", "forces",
-              "particles", "params", "initial", "simulate"}
+              "particles", "params", "initial", "simulate", "inputs", "inputs_values"}
 _PARTICLE_KEYS = {"mass", "position", "name"}
 #: ``[simulate]`` keys: ``t_end`` and the keyword options of :func:`lagrange.integrate.run.simulate` that are data
 _SIMULATE_KEYS = {"t_end", "method", "rtol", "atol", "n_points", "max_step", "backend", "friction",
@@ -77,6 +90,7 @@ class LoadedSpec:
     options: dict = field(default_factory=dict)
     label: str = ""
     problem: object | None = None
+    inputs: dict = field(default_factory=dict)  # input name -> number or expression of t and the parameters
 
 
 def _names_list(data: dict, key: str, path: Path, *, required: bool) -> list[str]:
@@ -98,16 +112,21 @@ def _names_list(data: dict, key: str, path: Path, *, required: bool) -> list[str
     return value
 
 
-def _namespace(coord_names: list[str], param_names: list[str], path: Path) -> tuple[dict, tuple, tuple]:
-    """The names an expression may use: t, each coordinate, its ``_dot`` velocity and the parameters."""
+def _namespace(coord_names: list[str], param_names: list[str], path: Path,
+               input_names: list[str] = ()) -> tuple[dict, tuple, tuple]:
+    """The names an expression may use: t, each coordinate, its ``_dot`` velocity, the parameters and the
+    inputs."""
     coords = make_coordinates(coord_names)
     coords = coords if isinstance(coords, tuple) else (coords,)
     params = make_parameters(param_names) if param_names else ()
     params = params if isinstance(params, tuple) else (params,)
+    ins = make_inputs(list(input_names)) if input_names else ()
+    ins = ins if isinstance(ins, tuple) else (ins,)
     names: dict = {"t": t}
     entries = [(q.func.__name__, q, "coordinate") for q in coords]
     entries += [(q.func.__name__ + VELOCITY_SUFFIX, q.diff(t), "velocity") for q in coords]
     entries += [(p.name, p, "parameter") for p in params]
+    entries += [(u.name, u, "input") for u in ins]
     kinds = {"t": "time"}
     for nm, obj, kind in entries:
         if nm in names:
@@ -211,7 +230,9 @@ def load_toml(path: Path) -> LoadedSpec:
         if not isinstance(data.get(key, ""), str):
             raise SpecError(f"{path}: '{key}' must be a string")
     coord_names = _names_list(data, "coordinates", path, required=True)
-    names, coords, params = _namespace(coord_names, _names_list(data, "parameters", path, required=False), path)
+    input_names = _names_list(data, "inputs", path, required=False)
+    names, coords, params = _namespace(coord_names, _names_list(data, "parameters", path, required=False), path,
+                                       input_names)
 
     def expr(key, value, max_terms=MAX_TERMS):
         return parse_expression(value, names, where=f"{path.name}: {key}", max_terms=max_terms)
@@ -235,7 +256,26 @@ def load_toml(path: Path) -> LoadedSpec:
     values = _values(data, "params", {p.name: None for p in params}, path)
     initial = _values(data, "initial", state_names, path)
     t_end, options = _simulate_table(data, path)
-    return LoadedSpec(system, values, initial, t_end, options, str(path))
+    return LoadedSpec(system, values, initial, t_end, options, str(path), inputs=_input_values(data, input_names,
+                                                                                                names, path))
+
+
+def _input_values(data: dict, input_names: list[str], names: dict, path: Path) -> dict:
+    """``[inputs_values]``: for declared inputs only, a number or an expression of t and the parameters."""
+    table = _table(data, "inputs_values", path)
+    unknown = sorted(set(table) - set(input_names))
+    if unknown:
+        raise SpecError(f"{path}: [inputs_values] has unknown name(s) {', '.join(unknown)} (declared inputs: "
+                        f"{', '.join(input_names) or 'none'}; declare them in 'inputs')")
+    allowed = {"t": t, **{k: v for k, v in names.items() if getattr(v, "is_Symbol", False) and k != "t"
+                          and k not in input_names}}
+    out = {}
+    for k, v in table.items():
+        if isinstance(v, bool) or not isinstance(v, (int, float, str)):
+            raise SpecError(f"{path.name}: inputs_values.{k}: expected a number or an expression, got {v!r}")
+        out[k] = _number(v, f"{path.name}: inputs_values.{k}") if not isinstance(v, str) else parse_expression(
+            v, allowed, where=f"{path.name}: inputs_values.{k} (a function of t and the parameters)")
+    return out
 
 
 def _load_python(path: Path) -> LoadedSpec:
@@ -251,7 +291,7 @@ def _load_python(path: Path) -> LoadedSpec:
     if not isinstance(system, System):
         raise SpecError(f"{path}: a Python spec must define `system = lagrange.System(...)`")
     return LoadedSpec(system, dict(ns.get("params", {})), dict(ns.get("initial", {})), ns.get("t_end"),
-                      dict(ns.get("options", {})), str(path))
+                      dict(ns.get("options", {})), str(path), inputs=dict(ns.get("inputs", {})))
 
 
 def _from_problem(problem) -> LoadedSpec:

@@ -50,15 +50,18 @@ def sweep(system, over: Mapping[str, Sequence[float] | str], *, t_end: float | N
           seed: int | None = 0, summaries: Sequence[Callable] = (), setup: Callable | None = None,
           events: Callable | None = None, backend: str = "python", executor: Any = None,
           workers: int | None = None, store: str | None = None, resume: bool = False,
-          progress: bool = True, **options):
+          progress: bool = True, inputs: Mapping | None = None, **options):
     """Run ``system`` at every point of a grid (or a random sample) and return a tidy table, one row per run.
 
     Parameters
     ----------
     system : System, or any picklable callable ``task(point) -> {column: scalar}``
-    over : ``{name: values}`` — values a sequence or ``"start:stop:num"``; names are parameters, coordinates
+    over : ``{name: values}`` — values a sequence or ``"start:stop:num"``; names are parameters, inputs, coordinates
         or velocities (``"theta_dot"``), or anything ``setup`` understands
     t_end, initial, params : the base run (the point's values override them); t_end is required for a System
+    inputs : the base values of the system's inputs (:mod:`lagrange.model.inputs`; any form ``simulate`` takes);
+        an ``over`` name that is an input sweeps its constant value; ``setup`` may return input values too (a
+        parameter of an input's function), see :class:`~lagrange.sweep.task.SimulationTask`
     random : None for the full grid (every combination); N for N points of a Latin hypercube over the box
         [min, max] of each name's values (``seed`` makes it reproducible)
     summaries : functions of the :class:`~lagrange.results.trajectory.Trajectory` giving extra columns (a
@@ -101,7 +104,7 @@ def sweep(system, over: Mapping[str, Sequence[float] | str], *, t_end: float | N
     points = random_points(over, random, seed=seed) if random is not None else grid_points(over)
     names = list(points[0])
     if callable(system) and not hasattr(system, "derived"):
-        if options or summaries or setup or events or initial or params:
+        if options or summaries or setup or events or initial or params or inputs:
             raise SweepError("a task callable takes only the points: simulate options, summaries, setup, "
                              "events, initial and params apply to a System")
         task = system
@@ -110,7 +113,7 @@ def sweep(system, over: Mapping[str, Sequence[float] | str], *, t_end: float | N
             raise SweepError("sweeping a System needs t_end (and initial values, unless `over` or setup gives "
                              "them all)")
         task = SimulationTask(system, t_end, initial or {}, params, options=options, summaries=summaries,
-                              setup=setup, events=events, backend=backend, first_point=points[0])
+                              setup=setup, events=events, backend=backend, first_point=points[0], inputs=inputs)
         task.check_point(points[0])
     ids = [run_id(p) for p in points]
     if len(set(ids)) != len(ids):

@@ -27,7 +27,7 @@ from ..errors import SweepError
 from ..integrate.run import initial_state
 from ..model.coordinates import coordinate_name
 
-__all__ = ["SimulationTask", "execute", "dumps_task", "state_names", "scalar_columns"]
+__all__ = ["SimulationTask", "InputExpressions", "execute", "dumps_task", "state_names", "scalar_columns"]
 
 Summary = Callable[[Any], Any]
 
@@ -65,26 +65,33 @@ class SimulationTask:
     system : System
     t_end : float — integrate over [0, t_end] (a terminal event may stop earlier)
     initial, params : base values (names or symbols as keys); the point's entries override them by name
+    inputs : base values of the system's inputs (any form :func:`~lagrange.integrate.run.simulate` takes); a
+        point entry named like an input sets it to that constant
     options : keyword arguments of :func:`~lagrange.integrate.run.simulate` (``method``, ``rtol``, …)
     summaries : callables ``f(trajectory)`` returning a scalar (column ``f.__name__``), a dict of scalars or
         a 1-D array (see :func:`scalar_columns`)
     setup : optional ``setup(system, point) -> (initial_updates, params_updates)`` for quantities that are
-        neither parameters nor initial values (a top's spin and tilt → Euler angles and rates)
+        neither parameters nor initial values (a top's spin and tilt → Euler angles and rates); it may return a
+        third mapping, ``input_updates``, to vary a parameter of an input's function (``{u: lambda t:
+        point["A"] * np.cos(t)}``)
     events : optional ``events(system) -> list`` of scipy-style event functions, built once per process
     backend : code-generation backend of the model compiled here and shipped to the workers
 
-    Point names must be parameters, coordinates, velocities (``q_dot``) or, with ``setup``, anything.
+    Point names must be parameters, inputs (constant values), coordinates, velocities (``q_dot``) or, with
+    ``setup``, anything.
     """
 
     def __init__(self, system, t_end: float, initial: Mapping, params: Mapping | None = None, *,
                  options: Mapping | None = None, summaries: Sequence[Summary] = (), setup: Callable | None = None,
-                 events: Callable | None = None, backend: str = "python", first_point: Mapping | None = None):
+                 events: Callable | None = None, backend: str = "python", first_point: Mapping | None = None,
+                 inputs: Mapping | None = None):
         self.system = system
         self.t_end = float(t_end)
         names = state_names(system)
         y0 = initial_state(system.derived.coordinates, initial) if initial else None
         self.initial = dict(zip(names, map(float, y0))) if y0 is not None else {}
         self.params = {k.name if hasattr(k, "name") else str(k): v for k, v in (params or {}).items()}
+        self.inputs = {k.name if hasattr(k, "name") else str(k): v for k, v in (inputs or {}).items()}
         self.options = dict(options or {})
         if "model" in self.options or "events" in self.options:
             raise SweepError("pass the model via `backend` and events as a factory `events(system) -> list`, "
@@ -92,22 +99,29 @@ class SimulationTask:
         self.summaries = tuple(summaries)
         self.setup, self.events = setup, events
         bind = {**self.params, **{k: v for k, v in (first_point or {}).items() if k in self.parameter_names}}
-        self.model = system.compile(bind, backend=backend)
+        # the inputs' slots are filled per run by simulate (constants, or the schedule of varying values)
+        self.model = system.compile(bind, backend=backend, inputs={nm: 0.0 for nm in self.input_names})
         self._event_list: list | None = None
 
     @property
     def parameter_names(self) -> list[str]:
-        return [s.name for s in self.system.derived.numeric_parameters]
+        inputs = set(self.system.derived.inputs)
+        return [s.name for s in self.system.derived.numeric_parameters if s not in inputs]
+
+    @property
+    def input_names(self) -> list[str]:
+        return [s.name for s in self.system.derived.inputs]
 
     def check_point(self, point: Mapping) -> None:
         """Raise SweepError naming every point entry that is neither a parameter nor a state entry."""
         if self.setup is not None:
             return
-        known = set(self.parameter_names) | set(state_names(self.system))
+        known = set(self.parameter_names) | set(self.input_names) | set(state_names(self.system))
         unknown = [k for k in point if k not in known]
         if unknown:
+            inputs = f", an input ({', '.join(self.input_names)})" if self.input_names else ""
             raise SweepError(f"cannot sweep {', '.join(unknown)}: not a parameter ({', '.join(self.parameter_names)})"
-                             f" nor an initial value ({', '.join(state_names(self.system))}) of this system")
+                             f"{inputs} nor an initial value ({', '.join(state_names(self.system))}) of this system")
 
     def __getstate__(self):
         state = dict(self.__dict__)
@@ -115,23 +129,52 @@ class SimulationTask:
         return state
 
     def __call__(self, point: Mapping) -> dict[str, Any]:
-        initial, params = dict(self.initial), dict(self.params)
+        initial, params, inputs = dict(self.initial), dict(self.params), dict(self.inputs)
         if self.setup is not None:
-            ini, par = self.setup(self.system, point)
+            ini, par, *more = self.setup(self.system, point)
             initial.update(_by_name(self.system, ini))
             params.update({k.name if hasattr(k, "name") else str(k): v for k, v in par.items()})
-        pnames, snames = set(self.parameter_names), set(state_names(self.system))
+            for extra in more[:1]:
+                inputs.update({k.name if hasattr(k, "name") else str(k): v for k, v in extra.items()})
+        pnames, snames, unames = set(self.parameter_names), set(state_names(self.system)), set(self.input_names)
         for k, v in point.items():
             if k in pnames:
                 params[k] = v
+            elif k in unames:
+                inputs[k] = v
             elif k in snames:
                 initial[k] = v
         if self.events is not None and self._event_list is None:
             self._event_list = list(self.events(self.system))
         model = self.model.with_params(params) if params else self.model
-        traj = self.system.simulate(self.t_end, initial, params, model=model, events=self._event_list,
-                                    **self.options)
+        if self.input_names or inputs:
+            options = {**self.options, "inputs": inputs}
+        else:
+            options = self.options
+        traj = self.system.simulate(self.t_end, initial, params, model=model, events=self._event_list, **options)
         return {**default_summary(traj), **_user_summaries(self.summaries, traj)}
+
+
+class InputExpressions:
+    """A picklable ``setup`` for :class:`SimulationTask` that sweeps parameters of input expressions:
+    ``setup(system, point) -> ({}, {}, {input: expression with the point's values substituted})``.
+
+    ``expressions`` maps input names to sympy expressions of t and of names (the point's names among them)
+    that are not parameters of the system (``F = F0*cos(w*t)`` with F0 swept). Point names that are not in
+    the expressions are checked and applied by the task as usual.
+    """
+
+    def __init__(self, expressions: Mapping, names: Sequence[str]):
+        self.expressions = dict(expressions)
+        self.names = tuple(names)
+
+    def __call__(self, system, point: Mapping):
+        values = {k: float(v) for k, v in point.items() if k in self.names}
+        out = {}
+        for name, e in self.expressions.items():
+            out[name] = e.subs({s: values[s.name] for s in e.free_symbols if s.name in values}) \
+                if hasattr(e, "free_symbols") else e
+        return {}, {}, out
 
 
 def _by_name(system, values: Mapping) -> dict[str, float]:
