@@ -10,6 +10,7 @@ from .analysis.steady_motion import oscillations_about_steady_motion, routhian, 
 from .analysis.variational import action, euler_lagrange, variational_integrate
 from .conventions import t
 from .errors import (
+    AnalysisError,
     BackendError,
     CollisionError,
     DeclarationError,
@@ -83,6 +84,7 @@ __all__ = [
     "IntegrationError",
     "SpecError",
     "SymbolicTimeoutError",
+    "AnalysisError",
     "BackendError",
     "InconsistentConstraintError",
     "CollisionError",
