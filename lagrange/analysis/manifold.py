@@ -436,7 +436,7 @@ class _Ops:
         return sp.Matrix.vstack(*[sp.Matrix.hstack(*r) for r in rows])
 
     def tidy(self, X):
-        return X if self.numeric else X.applyfunc(_tidy)
+        return X + 0.0 if self.numeric else X.applyfunc(_tidy)  # (+ 0.0 turns -0.0 into 0.0)
 
 
 def reduce(blk: dict, dep_q: Sequence[int], dep_u: Sequence[int], holonomic_rows: Sequence[int]) -> dict:
@@ -472,6 +472,7 @@ def reduce(blk: dict, dep_q: Sequence[int], dep_u: Sequence[int], holonomic_rows
     state = ops.block([[ops.rows(Cs, ind_q), ops.rows(Cw, ind_q)],
                        [ops.cols(rhs, range(nq)), ops.cols(rhs, range(nq, nq + nw))]])
     inp = ops.block([[ops.zeros(nq, k)], [ops.cols(rhs, range(nq + nw, nq + nw + k))]]) if k else ops.zeros(nq + nw, 0)
+    state, inp = ops.tidy(state), ops.tidy(inp)
     out = dict(A=state, B=inp, C0=C0, Cw=Cw, Cs=Cs, ind_q=ind_q, ind_u=ind_u, Mbar=Mbar)
     if len(holonomic_rows) == m and list(ind_q) == list(ind_u):
         out.update(a=Mbar, b=-low_w, c=-low_s, G=low_u, forcing=ops.tidy(Mbar @ ops.rows(_col(blk["qdd"], ops), ind_q)))

@@ -88,6 +88,8 @@ class LinearModel:
     multipliers : dict — ``{constraint name: λ₀}`` at the reference
     params : dict or None — the parameter values of the numeric route
     input_forces : ``G`` (second-order form) or None
+    acceleration : tuple or None — the reference accelerations ``q̈₀`` of all coordinates (zero at an
+        equilibrium or a steady motion; None when not computed: unconstrained symbolic route, see ``forcing``)
     """
 
     coordinates: tuple
@@ -106,6 +108,7 @@ class LinearModel:
     multipliers: dict = field(default_factory=dict)
     params: dict | None = None
     input_forces: object = None
+    acceleration: tuple | None = None
 
     def __repr__(self) -> str:
         kind = "numeric" if self.params is not None else "symbolic"
@@ -339,7 +342,8 @@ def linearize(system, about: Mapping | None = None, velocities: Mapping | None =
         speeds=tuple(coords[i].diff(t) for i in red["ind_u"]), inputs=inputs, all_coordinates=coords,
         coordinate_map=red["C0"], velocities=ref_v, multipliers=dict(zip(eqs.constraint_names, lam)),
         params=dict(params) if params is not None else None,
-        input_forces=red.get("G"))
+        input_forces=red.get("G"),
+        acceleration=tuple(float(v) for v in blk["qdd"]) if blk["numeric"] else tuple(blk["qdd"]))
 
 
 def _unconstrained_symbolic(system, q0, v0, u0, inputs) -> LinearModel:
