@@ -140,9 +140,18 @@ def _no_delta(e):
 # ------------------------------------------------------------------------------------------ numeric kernel
 
 
+#: functions without a complex-analytic extension in numpy: complex-step differentiation would be wrong
+_NON_ANALYTIC = (sp.sign, sp.Abs, sp.Heaviside, sp.atan2, sp.re, sp.im, sp.conjugate, sp.arg, sp.Piecewise, sp.Min,
+                 sp.Max, sp.floor, sp.ceiling)
+_STEP = 1e-30  # complex step: f'(x) = Im f(x + ih)/h, exact to rounding (no subtractive cancellation)
+
+
 @functools.lru_cache(maxsize=16)
 def _kernel(eqs, inputs: tuple):
-    """Lambdified blocks of ``eqs`` (built once per Equations and inputs; cached on the frozen Equations)."""
+    """Generated code for the blocks of ``eqs`` (built once per Equations and inputs: the frozen Equations is
+    the cache key). Returns ``(first, second, params)``: ``first`` evaluates M, f, A, b, c, the arguments of
+    sign/Abs terms and φ (also at complex arguments, for complex-step derivatives); ``second`` is None, or —
+    when a non-analytic function (sign, Abs, atan2, …) appears — the exact symbolic Jacobians, lambdified."""
     n, m = eqs.n, eqs.m
     q, qd, qdd, lam = list(eqs.q), list(eqs.qd), list(eqs.qdd), list(eqs.multipliers)
     params = [p for p in eqs.parameters if p not in inputs]
@@ -155,6 +164,8 @@ def _kernel(eqs, inputs: tuple):
     args = [q, qd, list(inputs), params, t]
     phis = [sp.sympify(ph) for ph in eqs.constraint_positions if ph is not None]
     first = [M, f, A, b, c, sp.Matrix(kinks) if kinks else sp.zeros(0, 1), sp.Matrix(phis) if phis else sp.zeros(0, 1)]
+    if not any(sp.sympify(e).has(*_NON_ANALYTIC) for X in (M, f, A, b, c) for e in X):
+        return _flat(args, first), None, tuple(params)
     res = f + A.T * sp.Matrix(lam) - M * sp.Matrix(qdd) if m else f - M * sp.Matrix(qdd)
     cres = c - A * sp.Matrix(qdd) if m else c
     g = A * sp.Matrix(qd) + b if m else b
@@ -163,17 +174,19 @@ def _kernel(eqs, inputs: tuple):
               cres.jacobian(q) if m else sp.zeros(0, n), c.jacobian(qd) if m else sp.zeros(0, n),
               c.jacobian(u) if (m and u) else sp.zeros(m, len(u)), g.jacobian(q) if m else sp.zeros(0, n)]
     second = [X.applyfunc(_no_delta) for X in second]
-    return (_flat(args, first), _flat(args + [qdd, lam], second), tuple(params))
+    return _flat(args, first), _flat(args + [qdd, lam], second), tuple(params)
 
 
 def _flat(args, mats):
-    """One lambdified function returning the matrices ``mats`` as float arrays (flattened, one CSE)."""
+    """One generated function returning the matrices ``mats`` as arrays (flattened, one CSE); float for real
+    arguments, complex for complex ones."""
     shapes = [X.shape for X in mats]
     exprs = [e for X in mats for e in X]
     fn = sp.lambdify(args, exprs, modules="numpy", cse=True) if exprs else None
 
     def call(*a):
-        vals = np.asarray(fn(*a) if fn else [], dtype=float).ravel()
+        cplx = any(np.iscomplexobj(x) for x in a)
+        vals = np.asarray(fn(*a) if fn else [], dtype=complex if cplx else float).ravel()
         out, k = [], 0
         for r, cc in shapes:
             out.append(vals[k:k + r * cc].reshape(r, cc))
@@ -183,12 +196,34 @@ def _flat(args, mats):
     return call
 
 
+def _complex_step(first, qv, vv, uv, pv, t0, qdd, lam) -> tuple:
+    """K_q, K_v, K_u, C_q, C_v, C_u, G_q by complex steps on the generated M, f, A, b, c."""
+
+    def parts(qx, vx, ux):
+        M, f, A, b, c = first(qx, vx, ux, pv, t0)[:5]
+        return np.concatenate([f[:, 0] + A.T @ lam - M @ qdd, c[:, 0] - A @ qdd, A @ vx + b[:, 0]])
+
+    def jac(which):
+        base = [qv.astype(complex), vv.astype(complex), uv.astype(complex)]
+        cols = []
+        for j in range(len(base[which])):
+            x = [v.copy() for v in base]
+            x[which][j] += 1j * _STEP
+            cols.append(parts(*x).imag / _STEP)
+        size = len(parts(*base))
+        return np.array(cols).T if cols else np.zeros((size, 0))
+
+    n, m = len(qv), len(lam)
+    Jq, Jv, Ju = jac(0), jac(1), jac(2)
+    return (Jq[:n], Jv[:n], Ju[:n], Jq[n:n + m], Jv[n:n + m], Ju[n:n + m], Jq[n + m:])
+
+
 def numeric_blocks(system, q0: Mapping, v0: Mapping, u0: Mapping, params: Mapping, inputs: tuple) -> dict:
     """The blocks at a numeric reference state (values may be expressions in the parameters)."""
     eqs = system.derived
     first, second, pnames = _kernel(eqs, tuple(inputs))
     by_name = {getattr(k, "name", str(k)): v for k, v in params.items()}
-    unknown = sorted(set(by_name) - {p.name for p in eqs.parameters} - {"t"})
+    unknown = sorted(set(by_name) - {p.name for p in eqs.parameters} - {u.name for u in inputs} - {"t"})
     if unknown:
         raise ParameterError(f"unknown parameter(s) {', '.join(unknown)} (parameters: "
                              f"{', '.join(p.name for p in eqs.parameters) or 'none'})")
@@ -218,9 +253,14 @@ def numeric_blocks(system, q0: Mapping, v0: Mapping, u0: Mapping, params: Mappin
     _check_kinks(eqs, kinks)
     blk = dict(M=M, f=f[:, 0], A=A, b=b[:, 0], c=c[:, 0], q=qv, v=vv, u=uv, phi=phi[:, 0], numeric=True)
     _check_manifold(eqs, blk)
+    if eqs.m:
+        choose_dependent(A, [s.name for s in eqs.q], "constraints", eqs.constraint_names)  # rank check, named
     qdd, lam = _reference_accelerations(blk, eqs)
     with np.errstate(all="ignore"):
-        Kq, Kv, Ku, Cq, Cv, Cu, Gq = second(qv, vv, uv, pv, t0, qdd, lam)
+        if second is None:
+            Kq, Kv, Ku, Cq, Cv, Cu, Gq = _complex_step(first, qv, vv, uv, pv, t0, qdd, lam)
+        else:
+            Kq, Kv, Ku, Cq, Cv, Cu, Gq = second(qv, vv, uv, pv, t0, qdd, lam)
     _finite({"the Jacobians": np.hstack([Kq, Kv])}, eqs, qv, vv)
     blk.update(qdd=qdd, lam=lam, Kq=Kq, Kv=Kv, Ku=Ku, Cq=Cq, Cv=Cv, Cu=Cu, Gq=Gq)
     return blk
@@ -328,7 +368,11 @@ def symbolic_blocks(system, q0: Mapping, v0: Mapping, u0: Mapping, inputs: tuple
     ev2 = lambda X: _no_delta_matrix(X).xreplace(atq).applyfunc(_tidy)  # noqa: E731
     blk = dict(M=M0, f=f0, A=A0, b=b0, c=c0, qdd=qdd, lam=lam, numeric=False,
                Kq=ev2(res.jacobian(q)), Kv=ev2(f.jacobian(qd)), Ku=ev2(f.jacobian(u)) if u else sp.zeros(n, 0))
-    if m:
+    if m and all(at[s] == 0 for s in eqs.qd) and all(sp.sympify(e) == 0 for e in b):
+        # c = −(∂(A q̇)/∂q) q̇ is quadratic in q̇: at rest its derivatives vanish (saves the costly ∂c/∂q)
+        blk.update(Cq=ev2(-(A * sp.Matrix(qdd)).jacobian(q)),
+                   Cv=sp.zeros(m, n), Cu=sp.zeros(m, len(u)), Gq=sp.zeros(m, n))
+    elif m:
         cres = c - A * sp.Matrix(eqs.qdd)
         g = A * sp.Matrix(qd) + b
         blk.update(Cq=ev2(cres.jacobian(q)), Cv=ev2(c.jacobian(qd)),
