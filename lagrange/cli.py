@@ -283,6 +283,7 @@ def _cmd_modes(args) -> int:
     import sympy
 
     from .analysis.small_oscillations import characteristic_roots, linearize, normal_modes
+    from .conventions import t as t_sym
     from .printing import pretty
     from .spec.loader import load_spec
 
@@ -291,14 +292,15 @@ def _cmd_modes(args) -> int:
         raise SpecError(f"{args.spec}: this problem has no equations of motion")
     system = spec.system
     eqs = system.derived
-    names = [p.name for p in eqs.parameters]
+    operating = dict(getattr(spec.problem, "operating_point", None) or {})
+    free = set().union(*[sympy.sympify(v).free_symbols for v in operating.values() if not isinstance(v, str)])
+    names = sorted({p.name for p in eqs.parameters} | {s.name for s in free})  # e.g. a speed v of the operating point
     given = _kv(args.param, "param")
     unknown = sorted(set(given) - set(names))
     if unknown:
         raise SpecError(f"--param: unknown parameter(s) {', '.join(unknown)} "
                         f"(parameters: {', '.join(names) or 'none'})")
     params = {**{getattr(k, "name", str(k)): v for k, v in spec.params.items()}, **given}
-    operating = dict(getattr(spec.problem, "operating_point", None) or {})
     about = {**operating, **_kv(args.about, "about")}
     numeric = all(n in params for n in names)
     constrained = bool(eqs.m)
@@ -318,8 +320,13 @@ def _cmd_modes(args) -> int:
         if constrained:
             lin = linearize(system, about)
             _print_constrained(lin, pretty)
-        if lin.forcing is not None and any(sympy.simplify(e) != 0 for e in lin.forcing):
-            print(f"note: not an equilibrium: F = {list(lin.forcing)}")
+        residual = lin.acceleration if lin.acceleration is not None else tuple(lin.forcing)
+        residual = [sympy.simplify(sympy.sympify(e).subs(t_sym, 0)) for e in residual]
+        if any(e != 0 for e in residual):
+            if not args.force:
+                raise SpecError(f"the reference state ({shown}) is not an equilibrium: q'' (or F) = {residual} there; "
+                                "choose an equilibrium (see `lagrange.equilibria`) or pass --force")
+            print(f"warning: not an equilibrium: q'' (or F) = {residual}; linearized anyway (--force)")
         missing = [n for n in names if n not in params]
         print(f"(give --param values for {', '.join(missing)} to get numbers)")
         return 0
@@ -330,15 +337,15 @@ def _cmd_modes(args) -> int:
     acc = np.abs(np.asarray(lin.acceleration, dtype=float))
     residual = float(acc.max()) if acc.size else 0.0
     moving = any(float(v) != 0 for v in lin.velocities.values())
-    kind = "steady motion" if moving else "equilibrium"
+    kind = "a steady motion" if moving else "an equilibrium"
     when = " (at t = 0; the forcing depends on t)" if not eqs.is_autonomous else ""
-    print(f"{kind} check: max |q''| at the reference = {residual:.3g}{when}")
+    print(f"{kind[kind.index(' ') + 1:]} check: max |q''| at the reference = {residual:.3g}{when}")
     if residual > 1e-8 * (1.0 + float(np.max(np.abs(A)))):
         if not args.force:
-            raise SpecError(f"the reference state ({shown}) is not an {kind}: the accelerations there are "
-                            f"{np.array2string(np.asarray(lin.acceleration), precision=4)}; choose an {kind} "
+            raise SpecError(f"the reference state ({shown}) is not {kind}: the accelerations there are "
+                            f"{np.array2string(np.asarray(lin.acceleration), precision=4)}; choose {kind} "
                             "(see `lagrange.equilibria`) or pass --force to linearize there anyway")
-        print(f"warning: not an {kind}; linearized anyway (--force)")
+        print(f"warning: not {kind}; linearized anyway (--force)")
     roots = characteristic_roots(lin)
     print("\neigenvalues of the state matrix (characteristic roots):", np.array2string(roots, precision=8))
     tol = 1e-6 * max(1.0, float(np.max(np.abs(roots)))) if roots.size else 0.0

@@ -91,6 +91,9 @@ def reference_state(system, about: Mapping | None, velocities: Mapping | None, i
         for k, val in src.items():
             for table, out in ((pos, q0), (vel, v0), (inp, u0)):
                 if k in table:
+                    if isinstance(val, str):  # never parse user strings here (only the spec parser does)
+                        raise AnalysisError(f"the reference value of {k} must be a number or a sympy expression, "
+                                            f"not the string {val!r}")
                     out[table[k]] = sp.sympify(val)
                     break
             else:
@@ -107,6 +110,21 @@ def reference_state(system, about: Mapping | None, velocities: Mapping | None, i
 
 def check_supported(eqs) -> None:
     """Refuse combinations the linearization does not handle (named in the message)."""
+    problem = _unsupported(eqs)
+    if problem:
+        raise AnalysisError(problem)
+
+
+@functools.lru_cache(maxsize=32)
+def _unsupported(eqs) -> str:
+    try:
+        _check_supported(eqs)
+    except AnalysisError as exc:
+        return str(exc)
+    return ""
+
+
+def _check_supported(eqs) -> None:
     if eqs.is_rough:
         raise AnalysisError("linearization of a system with rough (Coulomb-friction) constraints is not supported: "
                             f"the friction of {', '.join(eqs.constraint_names)} depends on the sign of the reaction")
@@ -125,6 +143,7 @@ def check_supported(eqs) -> None:
         raise AnalysisError(f"cannot linearize piecewise-defined forces: {bad[0]}")
 
 
+@functools.lru_cache(maxsize=32)
 def _kink_arguments(eqs) -> list:
     args = set()
     for e in eqs.forcing:
@@ -223,14 +242,23 @@ def numeric_blocks(system, q0: Mapping, v0: Mapping, u0: Mapping, params: Mappin
     eqs = system.derived
     first, second, pnames = _kernel(eqs, tuple(inputs))
     by_name = {getattr(k, "name", str(k)): v for k, v in params.items()}
-    unknown = sorted(set(by_name) - {p.name for p in eqs.parameters} - {u.name for u in inputs} - {"t"})
+    # symbols of the reference state's expressions (e.g. a speed v of an operating point) are parameters too
+    extra = set().union(*[sp.sympify(v).free_symbols for d in (q0, v0, u0) for v in d.values()]) - set(eqs.parameters)
+    known = {p.name for p in eqs.parameters} | {u.name for u in inputs} | {s.name for s in extra} | {"t"}
+    unknown = sorted(set(by_name) - known)
     if unknown:
         raise ParameterError(f"unknown parameter(s) {', '.join(unknown)} (parameters: "
-                             f"{', '.join(p.name for p in eqs.parameters) or 'none'})")
+                             f"{', '.join(sorted(known - {'t'})) or 'none'})")
+    missing_ref = sorted(s.name for s in extra if s.name not in by_name)
+    if missing_ref:
+        raise ParameterError(f"missing value(s) for {', '.join(missing_ref)} (used in the reference state)")
     missing = [p.name for p in pnames if p.name not in by_name]
     if missing:
         raise ParameterError(f"missing parameter value(s) for {', '.join(missing)}")
-    psub = {p: sp.sympify(by_name[p.name]) for p in eqs.parameters if p.name in by_name}
+    strings = [k for k, v in by_name.items() if isinstance(v, str)]
+    if strings:
+        raise ParameterError(f"parameter value(s) of {', '.join(strings)} must be numbers, not strings")
+    psub = {p: sp.sympify(by_name[p.name]) for p in list(eqs.parameters) + list(extra) if p.name in by_name}
 
     def num(val, what):
         x = sp.sympify(val).xreplace(psub)
