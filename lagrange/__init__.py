@@ -11,6 +11,7 @@ from .analysis.variational import action, euler_lagrange, variational_integrate
 from .conventions import t
 from .derive.euler import support_loads
 from .errors import (
+    AnalysisError,
     BackendError,
     CollisionError,
     DeclarationError,
@@ -91,6 +92,7 @@ __all__ = [
     "InputError",
     "SpecError",
     "SymbolicTimeoutError",
+    "AnalysisError",
     "BackendError",
     "InconsistentConstraintError",
     "CollisionError",

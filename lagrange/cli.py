@@ -317,31 +317,109 @@ def _cmd_verify(args) -> int:
 
 def _cmd_modes(args) -> int:
     import numpy as np
+    import sympy
 
     from .analysis.small_oscillations import characteristic_roots, linearize, normal_modes
+    from .conventions import t as t_sym
     from .printing import pretty
     from .spec.loader import load_spec
 
     spec = load_spec(args.spec)
     if spec.system is None:
         raise SpecError(f"{args.spec}: this problem has no equations of motion")
-    about = _kv(args.about, "about")
-    lin = linearize(spec.system, about)
-    print(f"linearized about {about or 'q = 0'}:  a s'' + b s' + c s = F")
-    for label, mat in (("a", lin.a), ("b", lin.b), ("c", lin.c)):
-        print(f"{label} =\n{pretty(mat)}")
-    if lin.a.shape[0] <= 3 and all(v == 0 for v in lin.b):
-        print(f"frequency equation |a w^2 - c| = 0:\n{pretty(sp_factor(lin.frequency_equation()))} = 0")
-    params = {**spec.params, **_kv(args.param, "param")}
-    if params:
-        modes = normal_modes(lin, params)
-        print("\nangular frequencies:", np.array2string(modes.omega, precision=8))
-        print("periods:", np.array2string(modes.periods, precision=8))
-        print("mode shapes (columns, normalized to a):\n", np.array2string(modes.shapes, precision=6))
-        if any(v != 0 for v in lin.b):
-            print("characteristic roots (with damping/gyroscopic terms):",
-                  np.array2string(characteristic_roots(lin, params), precision=6))
+    system = spec.system
+    eqs = system.derived
+    operating = dict(getattr(spec.problem, "operating_point", None) or {})
+    free = set().union(*[sympy.sympify(v).free_symbols for v in operating.values() if not isinstance(v, str)])
+    names = sorted({p.name for p in eqs.parameters} | {s.name for s in free})  # e.g. a speed v of the operating point
+    given = _kv(args.param, "param")
+    unknown = sorted(set(given) - set(names))
+    if unknown:
+        raise SpecError(f"--param: unknown parameter(s) {', '.join(unknown)} "
+                        f"(parameters: {', '.join(names) or 'none'})")
+    params = {**{getattr(k, "name", str(k)): v for k, v in spec.params.items()}, **given}
+    about = {**operating, **_kv(args.about, "about")}
+    numeric = all(n in params for n in names)
+    constrained = bool(eqs.m)
+    shown = ", ".join(f"{getattr(k, 'name', k)} = {v}" for k, v in about.items()) or "q = 0"
+    if not constrained:
+        lin = linearize(system, about)
+        bad = [nm for nm, X in (("a", lin.a), ("b", lin.b), ("c", lin.c)) if X.has(sympy.nan, sympy.zoo, sympy.oo)]
+        if bad:
+            raise SpecError(f"the equations are singular at {shown} ({', '.join(bad)} not finite): "
+                            "choose another point")
+        print(f"linearized about {shown}:  a s'' + b s' + c s = F")
+        for label, mat in (("a", lin.a), ("b", lin.b), ("c", lin.c)):
+            print(f"{label} =\n{pretty(mat)}")
+        if lin.a.shape[0] <= 3 and all(v == 0 for v in lin.b) and lin.a.det() != 0:
+            print(f"frequency equation |a w^2 - c| = 0:\n{pretty(sp_factor(lin.frequency_equation()))} = 0")
+    if not numeric:
+        if constrained:
+            lin = linearize(system, about)
+            _print_constrained(lin, pretty)
+        residual = lin.acceleration if lin.acceleration is not None else tuple(lin.forcing)
+        residual = [sympy.simplify(sympy.sympify(e).subs(t_sym, 0)) for e in residual]
+        if any(e != 0 for e in residual):
+            if not args.force:
+                raise SpecError(f"the reference state ({shown}) is not an equilibrium: q'' (or F) = {residual} there; "
+                                "choose an equilibrium (see `lagrange.equilibria`) or pass --force")
+            print(f"warning: not an equilibrium: q'' (or F) = {residual}; linearized anyway (--force)")
+        missing = [n for n in names if n not in params]
+        print(f"(give --param values for {', '.join(missing)} to get numbers)")
+        return 0
+    lin = linearize(system, about, params=params)
+    if constrained:
+        _print_constrained(lin, pretty)
+    A, _ = lin.numeric_state()
+    acc = np.abs(np.asarray(lin.acceleration, dtype=float))
+    residual = float(acc.max()) if acc.size else 0.0
+    moving = any(float(v) != 0 for v in lin.velocities.values())
+    kind = "a steady motion" if moving else "an equilibrium"
+    when = " (at t = 0; the forcing depends on t)" if not eqs.is_autonomous else ""
+    print(f"{kind[kind.index(' ') + 1:]} check: max |q''| at the reference = {residual:.3g}{when}")
+    if residual > 1e-8 * (1.0 + float(np.max(np.abs(A)))):
+        if not args.force:
+            raise SpecError(f"the reference state ({shown}) is not {kind}: the accelerations there are "
+                            f"{np.array2string(np.asarray(lin.acceleration), precision=4)}; choose {kind} "
+                            "(see `lagrange.equilibria`) or pass --force to linearize there anyway")
+        print(f"warning: not {kind}; linearized anyway (--force)")
+    roots = characteristic_roots(lin)
+    print("\neigenvalues of the state matrix (characteristic roots):", np.array2string(roots, precision=8))
+    tol = 1e-6 * max(1.0, float(np.max(np.abs(roots)))) if roots.size else 0.0
+    print("stable (all real parts <= 0)" if np.all(roots.real <= tol) else "unstable (a root has a positive real part)")
+    if lin.a is None:
+        print("(non-holonomic: no second-order form, so no normal modes)")
+        return 0
+    a, b, c = lin.numeric()
+    try:
+        modes = normal_modes(lin)
+    except LagrangeError as exc:
+        print(f"no normal modes: {exc}")
+        return 0
+    print("angular frequencies:", np.array2string(modes.omega, precision=8))
+    print("periods:", np.array2string(modes.periods, precision=8))
+    print("mode shapes (columns, normalized to a):\n", np.array2string(modes.shapes, precision=6))
+    if constrained:
+        labels = ", ".join(str(getattr(q, "name", q)) for q in eqs.q)
+        print(f"mode shapes in all coordinates ({labels}):\n", np.array2string(modes.full_shapes, precision=6))
+    if np.any(b != 0):
+        print("(b is not zero: the damped/gyroscopic characteristic roots above govern the motion)")
     return 0
+
+
+def _print_constrained(lin, pretty) -> None:
+    from .model.coordinates import coordinate_name
+
+    speeds = ", ".join(f"{coordinate_name(v.args[0])}_dot" for v in lin.speeds)
+    print(f"constrained system, linearized on the constraint manifold: independent coordinates "
+          f"({', '.join(coordinate_name(q) for q in lin.coordinates)}), independent speeds ({speeds})")
+    print("multipliers at the reference:", ", ".join(f"{k} = {v}" for k, v in lin.multipliers.items()))
+    if lin.a is not None:
+        for label, mat in (("a", lin.a), ("b", lin.b), ("c", lin.c)):
+            print(f"{label} =\n{pretty(mat) if lin.params is None else mat}")
+    else:
+        shown = pretty(lin.A) if lin.params is None else lin.A
+        print(f"state matrix (x = independent coordinates, then speeds):\n{shown}")
 
 
 def sp_factor(e):
@@ -404,8 +482,11 @@ def _parser() -> argparse.ArgumentParser:
 
     p = sub.add_parser("modes", help="linearize about an equilibrium: matrices, frequencies, mode shapes")
     p.add_argument("spec", help=spec_help)
-    p.add_argument("--about", action="append", metavar="q=VALUE", help="equilibrium coordinate values (default 0)")
+    p.add_argument("--about", action="append", metavar="q=VALUE",
+                   help="reference coordinate values (default: the problem's operating point, else 0) and velocities "
+                        "(q_dot=VALUE, for a steady motion)")
     p.add_argument("--param", action="append", metavar="NAME=VALUE", help="parameter values for numbers")
+    p.add_argument("--force", action="store_true", help="linearize even where the point is not an equilibrium")
     p.set_defaults(func=_cmd_modes)
 
     p = sub.add_parser("hamiltonian", help="print H and Hamilton's canonical equations")

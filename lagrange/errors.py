@@ -132,3 +132,12 @@ __all__ = [
     "LagrangeWarning",
     "UnusedParameterWarning",
 ]
+
+
+class AnalysisError(LagrangeError, ValueError):
+    """An analysis (linearization, equilibria, steady motion, Hamilton's equations) cannot be done for this
+    system or reference state: the message names the unsupported combination, or the residual of a reference
+    state that is off the constraint manifold or not an equilibrium."""
+
+
+__all__ += ["AnalysisError"]

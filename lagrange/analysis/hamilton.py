@@ -19,6 +19,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from ..conventions import t
+from ..errors import AnalysisError
 from ..model.coordinates import coordinate_name, to_functions
 from ..simplification import simplify
 
@@ -66,10 +67,14 @@ class HamiltonianForm:
 
 
 def hamiltonian(system) -> HamiltonianForm:
-    """The Hamiltonian form of an unconstrained system (Wells ch. 16)."""
+    """The Hamiltonian form of an unconstrained system (Wells ch. 16).
+
+    Raises :class:`~lagrange.errors.AnalysisError` for a constrained system (eliminate the constraints
+    first with :func:`lagrange.eliminate`)."""
     eqs = system.derived
     if eqs.m:
-        raise ValueError("Hamilton's equations are formed for unconstrained systems: eliminate the constraints first")
+        raise AnalysisError(f"Hamilton's equations are formed for unconstrained systems; this one has the constraints "
+                            f"{', '.join(eqs.constraint_names)}: eliminate them first (lagrange.eliminate)")
     q, qd = list(eqs.q), list(eqs.qd)
     p = [sp.Symbol(f"p_{coordinate_name(c)}", real=True) for c in system.coordinates]
     L = eqs.kinetic - eqs.potential

@@ -1,4 +1,4 @@
-r"""Equilibria, linearization and small oscillations (Wells ch. 10).
+r"""Linearization and small oscillations (Wells ch. 10), also on a constraint manifold.
 
 About an equilibrium ``q₀`` (``q = q₀ + s``) the equations become, to first order,
 
@@ -10,139 +10,360 @@ Undamped frequencies solve ``|a ω² − c| = 0`` (10.10, note the book's order)
 roots solve ``|a λ² + b λ + c| = 0`` (10.30). Normal coordinates ``g = Φᵀ a s`` with the modes Φ
 normalized so that ``Φᵀ a Φ = 1`` (Wells' c_s, 10.21) give ``T = ½Σġ²``, ``V = ½Σω²g²`` (10.22).
 Zero roots (free translation or rotation) and repeated roots are handled by the eigen-solver.
+
+Every linearization also gives the first-order state-space model ``ẋ = 𝒜 x + ℬ δu`` (inputs ``u``:
+``system.derived.inputs`` or the ``inputs=`` argument). **Constrained systems** (holonomic ``φ(q) = 0`` and
+non-holonomic ``A q̇ + b = 0``) are linearized on the constraint manifold, in independent coordinates ``s``
+and independent speeds ``w`` chosen automatically (or given with ``independent=`` and ``speeds=``): see
+:mod:`lagrange.analysis.manifold` for the method and its equations. With holonomic constraints only, the
+result also has Wells' ``a, b, c`` in the independent coordinates (so :func:`normal_modes` gives frequencies
+and mode shapes, also in all coordinates); a non-holonomic system has fewer independent speeds than
+coordinates and only the first-order form (use :func:`characteristic_roots`). A reference state off the
+manifold, moving (explicit-time) or rough constraints, and a friction term at its switching point are
+refused with :class:`~lagrange.errors.AnalysisError`.
+
+With ``params`` the linearization is numeric (float matrices from exact derivatives, generated once per
+system and reused for every operating point); without, symbolic (small systems, as Wells does).
 """
 
 from __future__ import annotations
 
-from collections.abc import Mapping
-from dataclasses import dataclass
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass, field
 
 import numpy as np
 import scipy.linalg
-import scipy.optimize
 import sympy as sp
 
 from ..conventions import t
-from ..errors import LagrangeError
-from ..model.coordinates import coordinate_name, position_symbol, to_functions, velocity_symbol
+from ..errors import AnalysisError, LagrangeError
+from ..model.coordinates import coordinate_name, position_symbol, velocity_symbol
 from ..simplification import factor, simplify, solve
+from . import manifold
+from .equilibria import Equilibrium, equilibria, equilibrium_equations
 
-__all__ = ["equilibrium_equations", "equilibria", "linearize", "LinearModel", "Modes", "normal_modes",
-           "characteristic_roots"]
-
-
-def _state_map(system, point: Mapping) -> dict:
-    """{q symbol: value} from a dict keyed by coordinates or names."""
-    out = {}
-    for q in system.coordinates:
-        for key in (q, coordinate_name(q), position_symbol(q)):
-            if key in point:
-                out[position_symbol(q)] = sp.sympify(point[key])
-                break
-    return out
+__all__ = ["equilibrium_equations", "equilibria", "Equilibrium", "linearize", "LinearModel", "Modes",
+           "normal_modes", "characteristic_roots"]
 
 
-def equilibrium_equations(system) -> list:
-    """The static equilibrium conditions ``f(q, q̇ = 0) = 0`` (= ∂V/∂q − F_q at rest), one per coordinate,
-    in the coordinate functions."""
-    eqs = system.derived
-    rest = {v: 0 for v in eqs.qd}
-    return [to_functions(sp.expand(-e.subs(rest)), system.coordinates) for e in eqs.forcing]
+def _by_name(params: Mapping | None) -> dict:
+    return {getattr(k, "name", str(k)): v for k, v in (params or {}).items()}
 
 
-def equilibria(system, params: Mapping | None = None, guess: Mapping | None = None, *, symbolic: bool = True):
-    """Static equilibria.
-
-    With ``params is None`` and ``symbolic`` the conditions are solved with sympy (a list of dicts, possibly
-    several); otherwise they are solved numerically with ``scipy.optimize.root`` from ``guess`` (a dict of
-    coordinate values, default all zero), returning one dict ``{coordinate: value}``.
-
-    Raises :class:`~lagrange.errors.LagrangeError` when the root finder does not converge.
-    """
-    eqs = system.derived
-    conds = [e.subs({v: 0 for v in eqs.qd}) for e in eqs.forcing]
-    if params is None and symbolic:
-        sols = solve(conds, list(eqs.q), dict=True, what="the equilibrium conditions")
-        return [{c: s.get(position_symbol(c), position_symbol(c)) for c in system.coordinates} for s in sols]
-    p = {sp.Symbol(k) if isinstance(k, str) else k: v for k, v in (params or {}).items()}
-    by_name = {getattr(k, "name", str(k)): v for k, v in p.items()}
-    sub = {s: by_name[s.name] for s in eqs.parameters if s.name in by_name}
-    t0 = float(by_name.get("t", 0.0))
-    f = sp.lambdify([list(eqs.q)], [sp.sympify(c).subs(sub).subs(t, t0) for c in conds], "numpy")
-    x0 = np.zeros(eqs.n)
-    if guess:
-        start = _state_map(system, guess)
-        x0 = np.array([float(start.get(s, 0.0)) for s in eqs.q])
-    res = scipy.optimize.root(lambda x: np.asarray(f(x), dtype=float), x0, tol=1e-12)
-    scale = max(1.0, float(np.max(np.abs(np.asarray(f(x0), dtype=float)))))
-    if not (res.success or float(np.max(np.abs(np.asarray(f(res.x), dtype=float)))) <= 1e-10 * scale):
-        raise LagrangeError(f"no equilibrium found from {dict(zip(map(str, eqs.q), x0))}: {res.message}")
-    return {c: float(v) for c, v in zip(system.coordinates, res.x)}
+def _numeric_matrix(Mx, params: Mapping | None, what: str) -> np.ndarray:
+    """A sympy matrix with parameter values (by name) substituted, as floats."""
+    if isinstance(Mx, np.ndarray):
+        return Mx
+    by_name = _by_name(params)
+    sub = {s: by_name[s.name] for s in Mx.free_symbols if s.name in by_name}
+    out = Mx.subs(sub)
+    if out.free_symbols:
+        raise LagrangeError(f"missing parameter values for {sorted(map(str, out.free_symbols))} in {what}")
+    if out.shape[0] * out.shape[1] == 0:
+        return np.zeros(out.shape)
+    return np.array(out.evalf(), dtype=float)
 
 
 @dataclass(frozen=True)
 class LinearModel:
-    """``a s̈ + b ṡ + c s = F(t)`` about a reference state (Wells' a, b, c of ch. 10–11), sympy matrices."""
+    """A linearization about a reference state.
+
+    ``a s̈ + b ṡ + c s = F + G δu`` (Wells' a, b, c of ch. 10–11; ``G`` = :attr:`input_forces`) in the
+    independent coordinates, when a second-order form exists (unconstrained or holonomic constraints only;
+    else ``a = b = c = None``), and always the first-order form ``ẋ = 𝒜 x + ℬ δu`` (:attr:`A`, :attr:`B`) on
+    the states ``x = (s, w)``: the independent coordinates then the independent speeds.
+
+    Attributes
+    ----------
+    coordinates : tuple — the independent coordinates s (all coordinates when unconstrained)
+    a, b, c : sympy matrices (symbolic route) or float arrays (numeric route, ``params`` given), or None
+    forcing : ``F`` at the reference (zero at an equilibrium)
+    about : dict — the reference coordinates ``{coordinate: value}``
+    state_matrix, input_matrix : 𝒜 and ℬ (None: computed from a, b, c on access)
+    speeds : tuple — the independent speeds ``q̇`` (derivatives)
+    inputs : tuple — input symbols u (columns of ℬ)
+    all_coordinates : tuple — every coordinate of the system
+    coordinate_map : ``C₀`` (n × len(s)) with ``δq = C₀ s`` in all coordinates (None: identity)
+    velocities : dict — reference velocities ``{q̇: value}``
+    multipliers : dict — ``{constraint name: λ₀}`` at the reference
+    params : dict or None — the parameter values of the numeric route
+    input_forces : ``G`` (second-order form) or None
+    acceleration : tuple or None — the reference accelerations ``q̈₀`` of all coordinates (zero at an
+        equilibrium or a steady motion; None when not computed: unconstrained symbolic route, see ``forcing``)
+    """
 
     coordinates: tuple
-    a: sp.Matrix
-    b: sp.Matrix
-    c: sp.Matrix
-    forcing: sp.Matrix
+    a: object
+    b: object
+    c: object
+    forcing: object
     about: dict
+    state_matrix: object = None
+    input_matrix: object = None
+    speeds: tuple = ()
+    inputs: tuple = ()
+    all_coordinates: tuple = ()
+    coordinate_map: object = None
+    velocities: dict = field(default_factory=dict)
+    multipliers: dict = field(default_factory=dict)
+    params: dict | None = None
+    input_forces: object = None
+    acceleration: tuple | None = None
 
-    def numeric(self, params: Mapping) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    def __repr__(self) -> str:
+        kind = "numeric" if self.params is not None else "symbolic"
+        s = ", ".join(map(coordinate_name, self.coordinates))
+        w = ", ".join(velocity_symbol(coordinate_of(v)).name for v in self.speeds) if self.speeds else s + " rates"
+        form = "a s'' + b s' + c s = F" if self.a is not None else "x' = A x + B u (no second-order form)"
+        cons = f", multipliers {self.multipliers}" if self.multipliers else ""
+        return (f"LinearModel({kind}; {form}; independent coordinates ({s}); independent speeds ({w}); "
+                f"inputs ({', '.join(u.name for u in self.inputs)}){cons})")
+
+    @property
+    def is_constrained(self) -> bool:
+        return bool(self.all_coordinates) and len(self.all_coordinates) != len(self.coordinates) or bool(
+            self.multipliers)
+
+    @property
+    def states(self) -> tuple:
+        """The state variables of 𝒜: the independent coordinates, then the independent speeds."""
+        speeds = self.speeds or tuple(q.diff(t) for q in self.coordinates)
+        return tuple(self.coordinates) + tuple(speeds)
+
+    @property
+    def A(self):
+        """𝒜, the state matrix of ``ẋ = 𝒜 x + ℬ δu``."""
+        if self.state_matrix is not None:
+            return self.state_matrix
+        a, b, c = self.a, self.b, self.c
+        n = a.shape[0]
+        if isinstance(a, np.ndarray):
+            return np.block([[np.zeros((n, n)), np.eye(n)], [-np.linalg.solve(a, c), -np.linalg.solve(a, b)]])
+        return sp.Matrix.vstack(sp.Matrix.hstack(sp.zeros(n, n), sp.eye(n)),
+                                sp.Matrix.hstack(-a.LUsolve(c), -a.LUsolve(b)))
+
+    @property
+    def B(self):
+        """ℬ, the input matrix of ``ẋ = 𝒜 x + ℬ δu`` (one column per input)."""
+        if self.input_matrix is not None:
+            return self.input_matrix
+        n, k = self.a.shape[0], len(self.inputs)
+        G = self.input_forces if self.input_forces is not None else (
+            np.zeros((n, k)) if isinstance(self.a, np.ndarray) else sp.zeros(n, k))
+        if isinstance(self.a, np.ndarray):
+            return np.vstack([np.zeros((n, k)), np.linalg.solve(self.a, G) if k else np.zeros((n, 0))])
+        return sp.Matrix.vstack(sp.zeros(n, k), self.a.LUsolve(G) if k else sp.zeros(n, 0))
+
+    def _check_params(self, params: Mapping | None) -> None:
+        if self.params is None or not params:
+            return
+        given, used = _by_name(params), _by_name(self.params)
+        diff = [k for k in given if k in used and float(sp.sympify(given[k])) != float(sp.sympify(used[k]))]
+        if diff:
+            raise AnalysisError(f"this numeric linearization was made with other values of {', '.join(diff)}: "
+                                "linearize again with the new parameters")
+
+    def numeric(self, params: Mapping | None = None) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """(a, b, c) as float arrays with parameter values substituted (keys: symbols or names)."""
-        by_name = {getattr(k, "name", str(k)): v for k, v in params.items()}
+        if self.a is None:
+            raise AnalysisError("a non-holonomic system has no second-order (a, b, c) form: use the state matrix "
+                                "(LinearModel.A, numeric_state) or characteristic_roots")
+        self._check_params(params)
+        return tuple(_numeric_matrix(X, params, "(a, b, c)") for X in (self.a, self.b, self.c))
 
-        def ev(Mx):
-            sub = {s: by_name[s.name] for s in Mx.free_symbols if s.name in by_name}
-            out = Mx.subs(sub)
-            if out.free_symbols:
-                raise LagrangeError(f"missing parameter values for {sorted(map(str, out.free_symbols))}")
-            return np.array(out.evalf(), dtype=float)
-
-        return ev(self.a), ev(self.b), ev(self.c)
+    def numeric_state(self, params: Mapping | None = None) -> tuple[np.ndarray, np.ndarray]:
+        """(𝒜, ℬ) as float arrays with parameter values substituted."""
+        self._check_params(params)
+        if self.state_matrix is None and self.a is not None and not isinstance(self.a, np.ndarray):
+            a, b, c = self.numeric(params)
+            k = len(self.inputs)
+            G = _numeric_matrix(self.input_forces, params, "the input forces") if k else np.zeros((a.shape[0], 0))
+            n = a.shape[0]
+            A = np.block([[np.zeros((n, n)), np.eye(n)], [-np.linalg.solve(a, c), -np.linalg.solve(a, b)]])
+            return A, np.vstack([np.zeros((n, k)), np.linalg.solve(a, G)])
+        return _numeric_matrix(self.A, params, "the state matrix"), _numeric_matrix(self.B, params, "the input matrix")
 
     def characteristic_polynomial(self, lam: sp.Symbol | None = None) -> sp.Expr:
-        """``|a λ² + b λ + c|`` (Wells 10.30); with b = 0 set λ = iω for ``|c − a ω²|``."""
+        """``|a λ² + b λ + c|`` (Wells 10.30); with b = 0 set λ = iω for ``|c − a ω²|``. Without a
+        second-order form: ``|λ I − 𝒜|``."""
         lam = lam or sp.Symbol("lambda")
-        return factor((self.a * lam**2 + self.b * lam + self.c).det())
+        if self.a is None:
+            A = sp.Matrix(self.A)
+            return factor((lam * sp.eye(A.shape[0]) - A).det())
+        return factor((sp.Matrix(self.a) * lam**2 + sp.Matrix(self.b) * lam + sp.Matrix(self.c)).det())
+
+    def _second_order(self, what: str):
+        if self.a is None:
+            raise AnalysisError(f"{what} needs a second-order form, which a non-holonomic system does not have: "
+                                "use characteristic_roots")
+        return sp.Matrix(self.a), sp.Matrix(self.c)
 
     def frequency_equation(self, omega: sp.Symbol | None = None) -> sp.Expr:
         """Wells' fundamental determinant ``|a ω² − c|`` (10.10)."""
+        a, c = self._second_order("the frequency equation")
         omega = omega or sp.Symbol("omega", positive=True)
-        return (self.a * omega**2 - self.c).det()
+        return (a * omega**2 - c).det()
 
     def squared_frequencies(self) -> list:
         """Symbolic roots ω² of ``|a ω² − c| = 0`` (small systems)."""
+        a, c = self._second_order("the squared frequencies")
         w2 = sp.Symbol("w2")
-        return solve((self.a * w2 - self.c).det(), w2, what="the frequency equation")
+        return solve((a * w2 - c).det(), w2, what="the frequency equation")
 
 
-def linearize(system, about: Mapping | None = None, velocities: Mapping | None = None) -> LinearModel:
-    """Linearize about ``q₀`` (default 0) with reference velocities (default 0; non-zero for a steady motion
-    of non-ignorable coordinates is not meaningful — use :mod:`lagrange.analysis.steady_motion`).
+def coordinate_of(v):
+    """The coordinate function of a velocity ``q.diff(t)``."""
+    return v.args[0] if isinstance(v, sp.Derivative) else v
 
-    ``a = M(q₀)``, ``b = −∂f/∂q̇``, ``c = −∂f/∂q``, ``F = f`` at the reference (a non-equilibrium reference
-    gives a constant or time-dependent ``F``).
+
+def _resolve(system, names, what: str, velocity: bool) -> list[int]:
+    """Indices of coordinates given by object or name (velocities too when ``velocity``)."""
+    idx = []
+    for k in names:
+        for i, q in enumerate(system.coordinates):
+            keys = {q, coordinate_name(q), position_symbol(q)}
+            if velocity:
+                keys |= {q.diff(t), velocity_symbol(q), velocity_symbol(q).name}
+            if k in keys:
+                idx.append(i)
+                break
+        else:
+            valid = ", ".join(coordinate_name(q) for q in system.coordinates)
+            raise AnalysisError(f"{what}: {k} is not a coordinate of the system ({valid})")
+    return idx
+
+
+def _dependent(system, given, J, count_rows: Sequence[int], what: str, velocity: bool, sample) -> list[int]:
+    """Dependent indices: the complement of the user's ``given`` independent ones, else chosen by pivoting."""
+    eqs = system.derived
+    n = eqs.n
+    rows = [eqs.constraint_names[k] for k in count_rows]
+    Jn = sample(J)
+    if given is None:
+        return manifold.choose_dependent(Jn, [s.name for s in eqs.q], f"constraints ({what})", rows)
+    ind = _resolve(system, given, f"independent {what}", velocity)
+    dep = [i for i in range(n) if i not in ind]
+    if len(set(ind)) != len(ind) or len(dep) != Jn.shape[0]:
+        raise AnalysisError(f"{n - Jn.shape[0]} independent {what} are needed (n = {n} minus {Jn.shape[0]} "
+                            f"constraints: {', '.join(rows)}), got {len(set(ind))}")
+    D = Jn[:, dep]
+    if D.size and np.linalg.cond(D) > 1e10:
+        names = ", ".join(eqs.q[i].name for i in ind)
+        raise AnalysisError(f"({names}) cannot be the independent {what} here: the constraints "
+                            f"{', '.join(rows)} do not determine the others (singular at the reference state)")
+    return dep
+
+
+def linearize(system, about: Mapping | None = None, velocities: Mapping | None = None, *,
+              params: Mapping | None = None, inputs: Sequence | None = None,
+              independent: Sequence | None = None, speeds: Sequence | None = None) -> LinearModel:
+    r"""Linearize about a reference state, on the constraint manifold when there are constraints.
+
+    Parameters
+    ----------
+    system : System
+    about : mapping — reference values of coordinates (default 0), and also of velocities (``x.diff(t)``,
+        ``"x_dot"``; default 0, non-zero for a steady motion) and inputs (default 0), keyed by object or name.
+        Values may be expressions in the parameters. Unknown names raise.
+    velocities : mapping, optional — reference velocities (the older spelling; same keys as in ``about``)
+    params : mapping, optional — parameter values: the numeric route (float matrices, accurate to rounding;
+        the exact Jacobians are generated once per system). Without it the result is symbolic.
+    inputs : sequence of Symbols, optional — the inputs u (columns of ℬ); default ``system.derived.inputs``
+    independent : sequence, optional — the independent coordinates (default: chosen by pivoting, keeping
+        the coordinates declared first independent)
+    speeds : sequence, optional — the independent speeds (velocities or coordinate names)
+
+    Returns
+    -------
+    LinearModel
+        ``a = M₀``, ``b = −∂f/∂q̇``, ``c = −∂f/∂q``, ``F = f`` at the reference for an unconstrained system
+        (Wells 10.4–10.6; a non-equilibrium reference gives a constant ``F``); on the manifold see
+        :mod:`lagrange.analysis.manifold`.
+
+    Raises
+    ------
+    AnalysisError
+        Reference state off the constraint manifold (with the residuals), unknown names, redundant or
+        singular constraints, an unusable choice of independent variables, rough or moving constraints, a
+        friction term at its switching point, or a singular mass matrix.
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> from lagrange import Holonomic, Particle, System, coordinates, parameters
+    >>> x, y = coordinates("x y"); m, g, l = parameters("m g l")
+    >>> s = System([x, y], bodies=[Particle(m, (x, y))], V=m*g*y, constraints=[Holonomic(sp.sqrt(x**2 + y**2) - l)])
+    >>> lin = linearize(s, {x: 0, y: -l})
+    >>> lin.coordinates, sp.simplify(lin.c[0, 0] / lin.a[0, 0])
+    ((x(t),), g/l)
     """
     eqs = system.derived
-    ref = {s: 0 for s in eqs.q}
-    ref.update(_state_map(system, about or {}))
-    vref = {v: 0 for v in eqs.qd}
-    for q in system.coordinates:
-        if velocities and q.diff(t) in velocities:
-            vref[velocity_symbol(q)] = sp.sympify(velocities[q.diff(t)])
-    at = {**ref, **vref}
+    inputs = tuple(getattr(eqs, "inputs", ()) if inputs is None else inputs)
+    bad = [u for u in inputs if not isinstance(u, sp.Symbol)]
+    if bad:
+        raise AnalysisError(f"inputs must be plain Symbols, got {bad}")
+    manifold.check_supported(eqs)
+    q0, v0, u0 = manifold.reference_state(system, about, velocities, inputs)
+    if not eqs.m and params is None and independent is None and speeds is None:
+        return _unconstrained_symbolic(system, q0, v0, u0, inputs)
+    if params is not None:
+        blk = manifold.numeric_blocks(system, q0, v0, u0, params, inputs)
+        sample = lambda X: X  # noqa: E731
+    else:
+        blk = manifold.symbolic_blocks(system, q0, v0, u0, inputs)
+        values = manifold.random_values(blk)
+        sample = lambda X: manifold._sample_matrix(X, values)  # noqa: E731
+    hol = [k for k, ph in enumerate(eqs.constraint_positions) if ph is not None]
+    A = blk["A"]
+    Phi = A[hol, :] if blk["numeric"] else A.extract(hol, list(range(eqs.n)))
+    dep_q = _dependent(system, independent, Phi, hol, "coordinates", False, sample)
+    if len(hol) == eqs.m:  # holonomic only: the speeds are the rates of the independent coordinates
+        dep_u = dep_q
+        if speeds is not None and sorted(_resolve(system, speeds, "speeds", True)) != \
+                [i for i in range(eqs.n) if i not in dep_q]:
+            raise AnalysisError("with holonomic constraints only, the independent speeds are the rates of the "
+                                "independent coordinates: give `independent=` alone")
+    else:
+        dep_u = _dependent(system, speeds, A, list(range(eqs.m)), "speeds", True, sample)
+    try:
+        red = manifold.reduce(blk, dep_q, dep_u, hol)
+    except np.linalg.LinAlgError:
+        raise AnalysisError("the reduced mass matrix is singular at the reference state") from None
+    coords = system.coordinates
+    ind_q = [coords[i] for i in red["ind_q"]]
+    ref_q = {c: (float(blk["q"][i]) if blk["numeric"] else q0.get(position_symbol(c), sp.S.Zero))
+             for i, c in enumerate(coords)}
+    ref_v = {c.diff(t): (float(blk["v"][i]) if blk["numeric"] else v0.get(velocity_symbol(c), sp.S.Zero))
+             for i, c in enumerate(coords)}
+    lam = [float(x) if blk["numeric"] else x for x in (blk["lam"] if blk["numeric"] else list(blk["lam"]))]
+    return LinearModel(
+        tuple(ind_q), red.get("a"), red.get("b"), red.get("c"), red.get("forcing"), ref_q,
+        state_matrix=red["A"], input_matrix=red["B"],
+        speeds=tuple(coords[i].diff(t) for i in red["ind_u"]), inputs=inputs, all_coordinates=coords,
+        coordinate_map=red["C0"], velocities=ref_v, multipliers=dict(zip(eqs.constraint_names, lam)),
+        params=dict(params) if params is not None else None,
+        input_forces=red.get("G"),
+        acceleration=tuple(float(v) for v in blk["qdd"]) if blk["numeric"] else tuple(blk["qdd"]))
+
+
+def _unconstrained_symbolic(system, q0, v0, u0, inputs) -> LinearModel:
+    """Wells' symbolic a, b, c of an unconstrained system (the reference need not be an equilibrium)."""
+    eqs = system.derived
+    at = {s: q0.get(s, sp.S.Zero) for s in eqs.q}
+    at.update({s: v0.get(s, sp.S.Zero) for s in eqs.qd})
+    at.update({u: u0.get(u, sp.S.Zero) for u in inputs})
     f = sp.Matrix(eqs.forcing)
     a = sp.Matrix(eqs.mass_matrix).subs(at)
     b = -f.jacobian(list(eqs.qd)).subs(at)
     c = -f.jacobian(list(eqs.q)).subs(at)
+    G = f.jacobian(list(inputs)).subs(at) if inputs else sp.zeros(eqs.n, 0)
     F = f.subs(at)
     simp = lambda M: M.applyfunc(lambda e: simplify(e, limit=199))  # noqa: E731
     return LinearModel(system.coordinates, simp(a), simp(b), simp(c), simp(F),
-                       {q: ref[position_symbol(q)] for q in system.coordinates})
+                       {q: at[position_symbol(q)] for q in system.coordinates}, inputs=inputs,
+                       all_coordinates=system.coordinates,
+                       velocities={q.diff(t): at[velocity_symbol(q)] for q in system.coordinates},
+                       input_forces=simp(G))
 
 
 @dataclass(frozen=True)
@@ -154,12 +375,18 @@ class Modes:
     omega : ndarray (n,) — angular frequencies, ascending (0 for rigid-body modes)
     shapes : ndarray (n, n) — column s is mode s, normalized so that ``shapesᵀ a shapes = I`` (Wells 10.21)
     a, c : the matrices used
+    coordinates : tuple — the coordinates of the rows of ``shapes`` (the independent ones when constrained)
+    all_coordinates : tuple — every coordinate of the system
+    full_shapes : ndarray (n_all, n) — the modes in all coordinates, ``C₀ shapes`` (``δq = C₀ s``)
     """
 
     omega: np.ndarray
     shapes: np.ndarray
     a: np.ndarray
     c: np.ndarray
+    coordinates: tuple = ()
+    all_coordinates: tuple = ()
+    full_shapes: np.ndarray | None = None
 
     @property
     def periods(self) -> np.ndarray:
@@ -199,9 +426,25 @@ class Modes:
         return g @ self.shapes.T
 
 
-def normal_modes(linear: LinearModel, params: Mapping) -> Modes:
-    """Generalized symmetric eigenproblem ``c Φ = a Φ ω²`` (scipy.linalg.eigh). Raises when ``a`` is not
-    positive definite or ``c`` has negative eigenvalues (an unstable equilibrium: no oscillation)."""
+def _linear(linear, params, kw: dict) -> LinearModel:
+    """A LinearModel as given, or linearize a System numerically with ``params`` and the keywords."""
+    if isinstance(linear, LinearModel):
+        if kw:
+            raise TypeError(f"{', '.join(kw)}: only with a System (this is already linearized)")
+        return linear
+    return linearize(linear, kw.pop("about", None), params=params if params is not None else {}, **kw)
+
+
+def normal_modes(linear, params: Mapping | None = None, **kwargs) -> Modes:
+    """Generalized symmetric eigenproblem ``c Φ = a Φ ω²`` (scipy.linalg.eigh).
+
+    ``linear`` is a :class:`LinearModel` or a System (then linearized numerically with ``params`` and the
+    keywords of :func:`linearize`: ``about=``, ``velocities=``, ``independent=``, ...). Constrained systems
+    (holonomic constraints) give the modes in the independent coordinates (``shapes``) and in all
+    coordinates (``full_shapes``). Raises :class:`~lagrange.errors.LagrangeError` when ``a`` is not positive
+    definite, ``c`` has negative eigenvalues (an unstable equilibrium: no oscillation), or the system is
+    non-holonomic (no second-order form: use :func:`characteristic_roots`)."""
+    linear = _linear(linear, params, kwargs)
     a, _, c = linear.numeric(params)
     c = (c + c.T) / 2
     try:
@@ -212,14 +455,20 @@ def normal_modes(linear: LinearModel, params: Mapping) -> Modes:
     if np.any(w2 < -1e-10 * scale):
         raise LagrangeError(f"unstable equilibrium: negative ω² {w2[w2 < 0]} (c is not positive semi-definite)")
     w2 = np.where(np.abs(w2) < 1e-12 * scale, 0.0, w2)
-    return Modes(np.sqrt(np.maximum(w2, 0.0)), Phi, a, c)
+    C0 = linear.coordinate_map
+    full = Phi if C0 is None else _numeric_matrix(C0, params or linear.params, "the coordinate map") @ Phi
+    return Modes(np.sqrt(np.maximum(w2, 0.0)), Phi, a, c, tuple(linear.coordinates),
+                 tuple(linear.all_coordinates or linear.coordinates), full)
 
 
-def characteristic_roots(linear: LinearModel, params: Mapping) -> np.ndarray:
-    """Roots λ of ``|a λ² + b λ + c| = 0`` (damped or gyroscopic), from the first-order companion form;
-    stable when every real part ≤ 0 (Wells 10.17)."""
-    a, b, c = linear.numeric(params)
-    n = a.shape[0]
-    A = np.block([[np.zeros((n, n)), np.eye(n)], [-np.linalg.solve(a, c), -np.linalg.solve(a, b)]])
-    return np.sort_complex(np.linalg.eigvals(A))
+def characteristic_roots(linear, params: Mapping | None = None, **kwargs) -> np.ndarray:
+    """Eigenvalues of the state matrix 𝒜 (= roots of ``|a λ² + b λ + c| = 0`` when there is a second-order
+    form; damped or gyroscopic), sorted; stable when every real part ≤ 0 (Wells 10.17).
 
+    ``linear`` is a :class:`LinearModel` or a System, linearized numerically with ``params`` and the
+    keywords of :func:`linearize` (e.g. ``characteristic_roots(bicycle, about={...}, params={...})``; the
+    derivatives are generated once per system and reused for every operating point). A constrained system
+    has ``len(states)`` roots, on the manifold."""
+    linear = _linear(linear, params, kwargs)
+    A, _ = linear.numeric_state(params)
+    return np.sort_complex(np.linalg.eigvals(A)) if A.size else np.zeros(0, dtype=complex)

@@ -13,6 +13,11 @@ coordinates constant, ``(∂R/∂q)₀ = 0`` (11.10) — possibly several soluti
 
 with antisymmetric gyroscopic ``g`` (Wells writes 11.12 with b = −g and −c). Stability from the roots of
 ``|aλ² + gλ + c| = 0`` (only even powers of λ when there is no damping).
+
+The Routhian is formed for unconstrained systems only: a constrained system raises
+:class:`~lagrange.errors.AnalysisError`. Eliminate holonomic constraints first (:func:`lagrange.eliminate`),
+or linearize about the steady motion directly on the constraint manifold, with the reference velocities in
+``about`` (:func:`lagrange.analysis.small_oscillations.linearize`, e.g. a rolling disc or a bicycle).
 """
 
 from __future__ import annotations
@@ -23,6 +28,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from ..conventions import t
+from ..errors import AnalysisError
 from ..model.coordinates import coordinate_name, position_symbol, to_functions, velocity_symbol
 from ..simplification import simplify, solve
 from .small_oscillations import LinearModel
@@ -67,8 +73,15 @@ def _bounded_simplify(e, limit: int = 120):
 
 
 def routhian(system, ignorable=None) -> Routhian:
-    """The Routhian for ``ignorable`` coordinates (default: all detected ignorable ones)."""
+    """The Routhian for ``ignorable`` coordinates (default: all detected ignorable ones).
+
+    Raises :class:`~lagrange.errors.AnalysisError` for a constrained system (see the module docstring)."""
     eqs = system.derived
+    if eqs.m:
+        raise AnalysisError(f"the Routhian is formed for unconstrained systems; this one has the constraints "
+                            f"{', '.join(eqs.constraint_names)}: eliminate them (lagrange.eliminate) or use "
+                            "linearize(system, about={coordinates and velocities of the steady motion}) on the "
+                            "constraint manifold")
     if ignorable is None:
         ignorable = tuple(system.ignorable_coordinates())
     ignorable = tuple(ignorable)

@@ -48,6 +48,8 @@ class Problem:
     simulation : default numbers for ``lagrange simulate`` (None: no dynamics to simulate)
     ranges : sampling ranges ``{symbol name: (lo, hi)}`` for numeric comparison where the default
         (parameters in [1.1, 2.3], coordinates and velocities in [0.15, 0.85]) leaves the domain
+    operating_point : the reference state for `lagrange modes`: {coordinate or velocity name: expression in the
+        parameters}
     """
 
     id: str
@@ -61,6 +63,7 @@ class Problem:
     simulation: Simulation | None = None
     ranges: Mapping = field(default_factory=dict)
     tags: Sequence[str] = ()
+    operating_point: Mapping = field(default_factory=dict)
 
     def check(self) -> list[CheckResult]:
         """Check every answer; never raises for a mismatch (it is reported)."""
