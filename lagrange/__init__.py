@@ -23,6 +23,7 @@ from .errors import (
     SymbolicTimeoutError,
 )
 from .gauss.check import GaussCheck, check_gauss
+from .interop.mechanics import from_mechanics
 from .model.bodies import Force, Particle
 from .model.constraints import Differential, Holonomic, IntegrableConstraintWarning, Nonholonomic, Rough
 from .model.coordinates import coordinates, delta, parameters
@@ -74,6 +75,7 @@ __all__ = [
     "action",
     "variational_integrate",
     "sweep",
+    "from_mechanics",
     "pretty",
     "LagrangeError",
     "DeclarationError",

@@ -21,7 +21,7 @@ from ..conventions import VELOCITY_SUFFIX, t
 from ..errors import DeclarationError
 from .bodies import Body
 from .constraints import Differential, Holonomic, Nonholonomic, normalize_constraints
-from .coordinates import coordinate_name, is_coordinate, virtual_displacement
+from .coordinates import coordinate_name, is_coordinate, normalize_time, virtual_displacement
 from .forces import generalized_forces
 
 if TYPE_CHECKING:
@@ -116,13 +116,13 @@ class System:
         description: str = "",
     ):
         problems: list[str] = []
+        # sympy.physics.mechanics dynamicsymbols (functions of Symbol('t')) are accepted: their time becomes t
+        coordinates, T, V, P, rayleigh, forces, prescribed, constraints = (
+            normalize_time(x) for x in (coordinates, T, V, P, rayleigh, forces, prescribed, constraints))
         coords = _as_coordinate_tuple(coordinates)
         bad = [c for c in coords if not is_coordinate(c)]
         for c in bad:
-            problems.append(
-                f"{c!r} is not a coordinate: declare coordinates with lagrange.coordinates('q1 q2'), "
-                "which gives functions of lagrange.t"
-            )
+            problems.append(_not_a_coordinate(c))
         coords = tuple(c for c in coords if is_coordinate(c))
         if not coords and not bad:
             problems.append("no coordinates given")
@@ -235,7 +235,9 @@ class System:
             order = sum(c for v, c in d.variable_count)
             var_ok = all(v == t for v, _ in d.variable_count)
             if not var_ok:
-                problems.append(f"{what} contains {d}: only time derivatives are allowed")
+                others = ", ".join(sorted({str(v) for v, _ in d.variable_count if v != t}))
+                problems.append(f"{what} contains {d}: only derivatives with respect to lagrange's time t are "
+                                f"allowed, not {others}")
             elif order > max_order:
                 if max_order == 0:
                     problems.append(
@@ -367,6 +369,13 @@ class System:
 
         return simulate(self, t_span, initial, params or {}, **options)
 
+    def to_mechanics(self):
+        """A formed ``sympy.physics.mechanics.LagrangesMethod`` with these equations; see
+        :func:`lagrange.interop.mechanics.to_mechanics`."""
+        from ..interop.mechanics import to_mechanics
+
+        return to_mechanics(self)
+
     # --- display --------------------------------------------------------------------------------
     def __repr__(self) -> str:
         label = f" {self.name!r}" if self.name else ""
@@ -382,6 +391,14 @@ class System:
         from ..printing import latex_equations
 
         return latex_equations(self)
+
+
+def _not_a_coordinate(c) -> str:
+    if isinstance(c, AppliedUndef) and len(c.args) == 1 and isinstance(c.args[0], sp.Symbol):
+        return (f"{c} is a function of {c.args[0]!r}, which is not lagrange's time t: declare coordinates with "
+                "lagrange.coordinates('q1 q2'), or with sympy's dynamicsymbols at their default time Symbol('t')")
+    return (f"{c!r} is not a coordinate: declare coordinates with lagrange.coordinates('q1 q2'), "
+            "which gives functions of lagrange.t")
 
 
 def _substitute_constraint(c, presc):
