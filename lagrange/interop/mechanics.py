@@ -165,17 +165,24 @@ def _generalized_forces(loads, N, q, qd, u_map) -> dict:
     out = {c: sp.S.Zero for c in q}
     for load in loads:
         where, vec = _load_parts(load)
-        if isinstance(where, me.Point):
-            motion = where.vel(N)
-        elif isinstance(where, me.ReferenceFrame):
-            motion = where.ang_vel_in(N)
-        else:
+        if not isinstance(where, (me.Point, me.ReferenceFrame)):
             raise DeclarationError(f"load {load!r} is applied to {where!r}, neither a Point nor a ReferenceFrame")
+        motion = _motion(where, N)
         motion = motion.subs(u_map) if u_map else motion
         vec = vec.subs(u_map) if u_map else vec
         for c, v in zip(q, qd):
             out[c] += sp.expand(vec.dot(motion.diff(v, N, var_in_dcm=False)))
     return out
+
+
+def _motion(where, N):
+    """The velocity of a point or the angular velocity of a frame in N; a DeclarationError when undefined."""
+    me = _me()
+    try:
+        return where.vel(N) if isinstance(where, me.Point) else where.ang_vel_in(N)
+    except ValueError as exc:
+        raise DeclarationError(f"from_mechanics: the motion of {where.name} in {N.name} is not defined "
+                               f"({exc})") from None
 
 
 def _u_map(q, u, kdes) -> dict:
@@ -192,6 +199,9 @@ def _u_map(q, u, kdes) -> dict:
 def _from_kane_model(N, q, u, kdes, bodies, loads, hol, nonhol, name):
     me = _me()
     qd = [c.diff(SYMPY_TIME) for c in q]
+    if not bodies:
+        raise DeclarationError(f"{name}: the model has no bodies, so it has no kinetic energy (give them to "
+                               "kanes_equations(bodies, loads) or System.add_bodies)")
     u_map = _u_map(q, u, kdes)
     T, V = sp.S.Zero, sp.S.Zero
     for body in bodies:
@@ -233,7 +243,7 @@ def _non_holonomic_refusal(what: str, detail: str) -> DeclarationError:
 def _check_point(P, N, q, qd, u_map, what: str) -> None:
     """The velocity of P in N must be exact: ``v = Σ a_j(q, t) q̇_j + b(q, t)`` with ``∂a_j/∂q_k = ∂a_k/∂q_j``
     and ``∂a_j/∂t = ∂b/∂q_j`` in every inertial component — the time derivative of a position r(q, t)."""
-    v = P.vel(N)
+    v = _motion(P, N)
     v = v.subs(u_map) if u_map else v
     qs, vs, plain = _plain(q, qd)
     ts = sp.Dummy("t")
@@ -257,7 +267,7 @@ def _check_point(P, N, q, qd, u_map, what: str) -> None:
 
 def _check_frame(B, N, q, qd, u_map, what: str) -> None:
     """The angular velocity of B in N must be the one its orientation gives (``Ṙ Rᵀ``)."""
-    w = B.ang_vel_in(N)
+    w = _motion(B, N)
     w = w.subs(u_map) if u_map else w
     try:
         true = B._w_diff_dcm(N)
