@@ -131,6 +131,8 @@ def tidy_trig(expr, *, limit: int = TIDY_LIMIT, seconds: float = TIDY_SECONDS):
         return run_bounded(_tidy, expr, what="a trigonometric tidy-up for display", seconds=seconds)
     except SymbolicTimeoutError:
         return expr
+    except Exception:  # noqa: BLE001 - display only: a rule sympy cannot apply leaves the expression as derived
+        return expr
 
 
 def display_equations(system) -> list[sp.Eq]:

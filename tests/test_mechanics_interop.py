@@ -316,3 +316,26 @@ def test_rolling_disc_from_kanes_method_with_velocity_constraints():
     values = {**params, **dict(zip(us, qd)), **dict(zip(qs, q))}
     udot = dict(zip(kane.u, _solve_full(kane, values)[5:]))  # Kane orders the speeds independent first
     _close(_lagrange_accelerations(system, params, q, qd), [udot[u] for u in us])
+
+
+def test_a_lagrange_model_to_mechanics_keeps_every_force():
+    """Declared with lagrange's own coordinates: a Cartesian pendulum on a length constraint with Wells' power
+    function (drag), a Rayleigh function and a driving force with explicit t. The LagrangesMethod is in sympy's
+    dynamicsymbols and its accelerations equal lagrange's at a consistent state."""
+    x, y = lg.coordinates("x y")
+    m, g, l, b, c, F, w = lg.parameters("m g l b c F omega")
+    tt = lg.t
+    system = lg.System([x, y], bodies=[lg.Particle(m, (x, y))], V=m * g * y, P=-b * x.diff(tt) ** 2 / 2,
+                       rayleigh=c * y.diff(tt) ** 2 / 2, forces=[{x: F * sp.cos(w * tt)}],
+                       constraints=[lg.Holonomic(x**2 + y**2 - l**2, "rod")])
+    lm = to_mechanics(system)
+    assert list(lm.q) == list(me.dynamicsymbols("x y"))
+    params = {m: 1.2, g: 9.81, l: 0.9, b: 0.3, c: 0.2, F: 0.8, w: 1.7}
+    q = 0.9 * np.array([np.sin(0.5), -np.cos(0.5)])
+    qd = 1.3 * np.array([np.cos(0.5), np.sin(0.5)])  # tangent to the circle
+    t0 = 0.6
+    model = system.compile({s.name: v for s, v in params.items()})
+    ours = np.asarray(model.rhs(t0, np.concatenate([q, qd]), model._pcall), dtype=float)[2:]
+    values = {**{sp.Symbol(s.name): v for s, v in params.items()}, **params, T_S: t0,
+              **{c_.diff(T_S): v for c_, v in zip(lm.q, qd)}, **dict(zip(lm.q, q))}
+    _close(_solve_full(lm, values)[2:4], ours)

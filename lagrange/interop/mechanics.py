@@ -289,8 +289,8 @@ def to_mechanics(system):
     ``F_q + ∂P/∂q̇ − ∂D/∂q̇`` enter as forces along ``N.x`` at auxiliary points moving with ``q̇_r N.x``
     (see the module notes); holonomic constraints ``φ = 0`` go to ``hol_coneqs`` and non-holonomic ones
     ``A q̇ + b = 0`` to ``nonhol_coneqs``. ``form_lagranges_equations()`` has been called, so
-    ``mass_matrix_full``, ``forcing_full`` and ``rhs()`` are ready. The coordinates are the system's
-    coordinate functions with sympy's time (same names).
+    ``mass_matrix_full``, ``forcing_full`` and ``rhs()`` are ready. The coordinates are
+    ``dynamicsymbols`` with the names of the system's coordinates.
 
     Raises
     ------
@@ -304,7 +304,9 @@ def to_mechanics(system):
         parts = ([f"rough constraints ({', '.join(rough)})"] if rough else []) + (
             [f"unilateral constraints ({', '.join(one_sided)})"] if one_sided else [])
         raise DeclarationError(f"to_mechanics: {' and '.join(parts)} have no counterpart in LagrangesMethod")
-    back = {t: SYMPY_TIME}
+    ts = me.dynamicsymbols._t
+    # each coordinate becomes sympy's dynamicsymbols(name) (no assumptions), time becomes dynamicsymbols._t
+    back = {t: ts, **{c: sp.Function(coordinate_name(c))(ts) for c in system.coordinates}}
 
     def s(e):
         return sp.sympify(e).xreplace(back)

@@ -55,7 +55,9 @@ class System:
     Parameters
     ----------
     coordinates : sequence of coordinate functions (from :func:`lagrange.coordinates`)
-        The generalized coordinates, in the order used for equations and states.
+        The generalized coordinates, in the order used for equations and states. sympy's
+        ``dynamicsymbols`` are accepted here and in every expression and body: their time ``Symbol('t')``
+        becomes :data:`lagrange.t` (:func:`~lagrange.model.coordinates.normalize_time`).
     T : expression, optional
         Kinetic energy in the coordinate functions, their derivatives and ``t``. Added to the kinetic
         energy of ``bodies`` when both are given.
