@@ -28,6 +28,7 @@ from .errors import (
     UnusedParameterWarning,
 )
 from .gauss.check import GaussCheck, check_gauss
+from .interop.mechanics import from_mechanics
 from .model.bodies import Force, Particle
 from .model.constraints import Differential, Holonomic, IntegrableConstraintWarning, Nonholonomic, Rough
 from .model.coordinates import coordinates, delta, parameters, to_functions, to_symbols, unknowns
@@ -82,6 +83,7 @@ __all__ = [
     "action",
     "variational_integrate",
     "sweep",
+    "from_mechanics",
     "pretty",
     "LagrangeError",
     "DeclarationError",

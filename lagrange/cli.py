@@ -81,28 +81,27 @@ def _cmd_problems(args) -> int:
 
 
 def _cmd_derive(args) -> int:
-    from .printing import format_equations, latex
+    import textwrap
+
+    from .printing import display_equations, format_equations, format_momenta, latex, terminal_width
     from .spec.loader import load_spec
 
     spec = load_spec(args.spec)
     system = spec.system
+    width = terminal_width()
     if spec.problem is not None and hasattr(spec.problem, "title"):
-        print(f"{spec.problem.id}: {spec.problem.title} ({spec.problem.source})")
+        print(textwrap.fill(f"{spec.problem.id}: {spec.problem.title} ({spec.problem.source})", width))
     if system is None:
         print("this problem has no equations of motion (its answers are checked by `lagrange verify`)")
         return 0
     if args.latex:
-        for eq in system.equations():
+        for eq in display_equations(system):
             print(latex(eq))
     else:
-        print(format_equations(system))
-    ign = system.ignorable_coordinates()
-    if ign:
-        from .printing import pretty
-
-        print("\nignorable coordinates (conserved momenta):")
-        for q, p in ign.items():
-            print(f"  {q.func.__name__}: p = {pretty(p)}")
+        print(format_equations(system, width))
+    momenta = format_momenta(system, width)
+    if momenta:
+        print("\n" + momenta)
     return 0
 
 

@@ -21,7 +21,7 @@ from typing import Protocol, runtime_checkable
 import sympy as sp
 
 from ..errors import DeclarationError
-from .coordinates import time_derivative
+from .coordinates import normalize_time, time_derivative
 
 __all__ = ["Body", "Particle", "Force", "as_vector"]
 
@@ -74,7 +74,8 @@ class Particle:
     name: str = ""
 
     def __init__(self, mass, position, name: str = ""):
-        object.__setattr__(self, "mass", sp.sympify(mass))
+        mass, position = normalize_time(sp.sympify(mass)), normalize_time(position)  # dynamicsymbols accepted
+        object.__setattr__(self, "mass", mass)
         object.__setattr__(self, "position", as_vector(position, f"position of particle {name!r}"))
         object.__setattr__(self, "name", name)
 
@@ -115,7 +116,7 @@ class Force:
     name: str = ""
 
     def __init__(self, at, vector, name: str = ""):
-        point = at.position if isinstance(at, Particle) else as_vector(at, "point of application")
+        point = at.position if isinstance(at, Particle) else as_vector(normalize_time(at), "point of application")
         object.__setattr__(self, "at", point)
-        object.__setattr__(self, "vector", as_vector(vector, f"force {name!r}"))
+        object.__setattr__(self, "vector", as_vector(normalize_time(vector), f"force {name!r}"))
         object.__setattr__(self, "name", name)

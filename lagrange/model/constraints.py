@@ -27,7 +27,7 @@ import sympy as sp
 
 from ..conventions import t
 from ..simplification import is_zero
-from .coordinates import coordinate_name, is_coordinate
+from .coordinates import coordinate_name, is_coordinate, normalize_fields, normalize_time
 
 __all__ = [
     "Holonomic",
@@ -60,6 +60,9 @@ class Holonomic:
     name: str = ""
     unilateral: bool = False
 
+    def __post_init__(self):
+        normalize_fields(self)  # sympy.physics.mechanics dynamicsymbols are accepted
+
 
 @dataclass(frozen=True)
 class Rough:
@@ -80,6 +83,9 @@ class Rough:
     name: str = ""
     normal: sp.Expr = sp.S.One
 
+    def __post_init__(self):
+        normalize_fields(self)
+
 
 @dataclass(frozen=True)
 class Nonholonomic:
@@ -87,6 +93,9 @@ class Nonholonomic:
 
     expr: sp.Expr
     name: str = ""
+
+    def __post_init__(self):
+        normalize_fields(self)
 
 
 @dataclass(frozen=True)
@@ -96,6 +105,10 @@ class Differential:
     coefficients: Mapping
     dt: sp.Expr = sp.S.Zero
     name: str = ""
+
+    def __post_init__(self):
+        object.__setattr__(self, "coefficients", normalize_time(dict(self.coefficients)))
+        object.__setattr__(self, "dt", normalize_time(self.dt))
 
     def velocity_form(self):
         return sum((sp.sympify(a) * q.diff(t) for q, a in self.coefficients.items()), sp.S.Zero) + sp.sympify(self.dt)

@@ -31,7 +31,12 @@ __all__ = [
     "to_functions",
     "applied_functions",
     "time_derivative",
+    "SYMPY_TIME",
+    "normalize_time",
 ]
+
+#: The time symbol of ``sympy.physics.mechanics.dynamicsymbols`` (``Symbol('t')``, no assumptions).
+SYMPY_TIME = sp.Symbol("t")
 
 _DELTA_PREFIX = "delta_"
 
@@ -98,6 +103,40 @@ def unknowns(spec: str | Sequence[str]):
     """
     syms = tuple(sp.Symbol(n, real=True) for n in _names(spec))
     return syms[0] if len(syms) == 1 else syms
+
+
+def normalize_time(obj):
+    """``obj`` with sympy's time ``Symbol('t')`` replaced by :data:`lagrange.t` (which is real).
+
+    This is how ``sympy.physics.mechanics.dynamicsymbols`` are accepted wherever lagrange takes expressions
+    (coordinates, energies, forces, bodies, constraints): ``dynamicsymbols('q')`` is ``q(Symbol('t'))``, and
+    becomes ``q(lagrange.t)``. Expressions, matrices, and lists, tuples and dicts of them are converted;
+    anything else is returned as it is. Any other symbol named ``t`` is left alone (and refused by
+    :class:`~lagrange.System` as a second time symbol).
+
+    >>> from sympy.physics.mechanics import dynamicsymbols
+    >>> from lagrange import t
+    >>> q = normalize_time(dynamicsymbols("q"))
+    >>> q.args == (t,)
+    True
+    >>> normalize_time(dynamicsymbols("q").diff()) == q.diff(t)
+    True
+    """
+    if isinstance(obj, (sp.Basic, sp.MatrixBase)):
+        return obj.xreplace({SYMPY_TIME: t}) if obj.has(SYMPY_TIME) else obj
+    if type(obj) in (list, tuple):
+        return type(obj)(normalize_time(x) for x in obj)
+    if type(obj) is dict:
+        return {normalize_time(k): normalize_time(v) for k, v in obj.items()}
+    return obj
+
+
+def normalize_fields(obj) -> None:
+    """:func:`normalize_time` applied to every field of a frozen dataclass (its ``__post_init__``)."""
+    from dataclasses import fields
+
+    for f in fields(obj):
+        object.__setattr__(obj, f.name, normalize_time(getattr(obj, f.name)))
 
 
 def is_coordinate(obj) -> bool:

@@ -24,7 +24,7 @@ from functools import cached_property
 import sympy as sp
 
 from .bodies import as_vector
-from .coordinates import time_derivative
+from .coordinates import normalize_time, time_derivative
 from .inertia import Inertia
 from .rotations import EulerAngles, Quaternion, as_rotation, body_angular_velocity
 
@@ -66,7 +66,10 @@ class RigidBody:
     """
 
     def __init__(self, mass, inertia, origin=(0, 0, 0), orientation=None, com=(0, 0, 0), name: str = ""):
-        self.mass = sp.sympify(mass)
+        mass, inertia, origin, com = (normalize_time(x) for x in (sp.sympify(mass), inertia, origin, com))
+        if isinstance(orientation, (sp.MatrixBase, list, tuple)):  # dynamicsymbols accepted
+            orientation = normalize_time(orientation)
+        self.mass = mass
         self.inertia = _tensor(inertia)
         self.origin = as_vector(origin, f"origin of rigid body {name!r}")
         self.orientation = orientation if orientation is not None else sp.eye(3)
@@ -150,7 +153,7 @@ class Torque:
         if frame not in ("body", "inertial"):
             raise ValueError("Torque frame must be 'body' or 'inertial'")
         object.__setattr__(self, "body", body)
-        object.__setattr__(self, "vector", as_vector(vector, "torque"))
+        object.__setattr__(self, "vector", as_vector(normalize_time(vector), "torque"))
         object.__setattr__(self, "frame", frame)
 
     def angular_velocity(self) -> sp.Matrix:

@@ -28,7 +28,7 @@ import sympy as sp
 
 from ..conventions import t
 from ..simplification import trigsimp
-from .coordinates import time_derivative
+from .coordinates import normalize_fields, time_derivative
 
 __all__ = [
     "rot_x",
@@ -74,6 +74,9 @@ class EulerAngles:
     theta: sp.Expr
     phi: sp.Expr
 
+    def __post_init__(self):
+        normalize_fields(self)  # sympy.physics.mechanics dynamicsymbols are accepted
+
     @property
     def matrix(self) -> sp.Matrix:
         return rot_z(self.psi) * rot_x(self.theta) * rot_z(self.phi)
@@ -107,6 +110,9 @@ class Quaternion:
     q2: sp.Expr
     q3: sp.Expr
     name: str = "unit quaternion"
+
+    def __post_init__(self):
+        normalize_fields(self)
 
     @property
     def components(self) -> tuple:

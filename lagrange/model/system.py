@@ -23,7 +23,7 @@ from ..conventions import t as _TIME
 from ..errors import DeclarationError
 from .bodies import Body
 from .constraints import Differential, Holonomic, Nonholonomic, normalize_constraints
-from .coordinates import coordinate_name, is_coordinate, virtual_displacement
+from .coordinates import coordinate_name, is_coordinate, normalize_time, virtual_displacement
 from .forces import generalized_forces
 from .inputs import Input, inputs_in
 from .integrals import evaluate_integrals
@@ -67,7 +67,9 @@ class System:
     Parameters
     ----------
     coordinates : sequence of coordinate functions (from :func:`lagrange.coordinates`)
-        The generalized coordinates, in the order used for equations and states.
+        The generalized coordinates, in the order used for equations and states. sympy's
+        ``dynamicsymbols`` are accepted here and in every expression and body: their time ``Symbol('t')``
+        becomes :data:`lagrange.t` (:func:`~lagrange.model.coordinates.normalize_time`).
     T : expression, optional
         Kinetic energy in the coordinate functions, their derivatives and ``t``. Added to the kinetic
         energy of ``bodies`` when both are given.
@@ -140,6 +142,9 @@ class System:
         description: str = "",
     ):
         problems: list[str] = []
+        # sympy.physics.mechanics dynamicsymbols (functions of Symbol('t')) are accepted: their time becomes t
+        coordinates, T, V, P, rayleigh, forces, prescribed, constraints = (
+            normalize_time(x) for x in (coordinates, T, V, P, rayleigh, forces, prescribed, constraints))
         coords = _as_coordinate_tuple(coordinates)
         bad = [c for c in coords if not is_coordinate(c)]
         for c in bad:
@@ -150,10 +155,7 @@ class System:
                     "lagrange.coordinates"
                 )
                 continue
-            problems.append(
-                f"{c!r} is not a coordinate: declare coordinates with lagrange.coordinates('q1 q2'), "
-                "which gives functions of lagrange.t"
-            )
+            problems.append(_not_a_coordinate(c))
         coords = tuple(c for c in coords if is_coordinate(c))
         if not coords and not bad:
             problems.append("no coordinates given")
@@ -271,7 +273,9 @@ class System:
             order = sum(c for v, c in d.variable_count)
             var_ok = all(v == t for v, _ in d.variable_count)
             if not var_ok:
-                problems.append(f"{what} contains {d}: only time derivatives are allowed")
+                others = ", ".join(sorted({str(v) for v, _ in d.variable_count if v != t}))
+                problems.append(f"{what} contains {d}: only derivatives with respect to lagrange's time t are "
+                                f"allowed, not {others}")
             elif order > max_order:
                 if max_order == 0:
                     problems.append(
@@ -517,6 +521,13 @@ class System:
 
         return simulate(self, t_span, initial, params or {}, **options)
 
+    def to_mechanics(self):
+        """A formed ``sympy.physics.mechanics.LagrangesMethod`` with these equations; see
+        :func:`lagrange.interop.mechanics.to_mechanics`."""
+        from ..interop.mechanics import to_mechanics
+
+        return to_mechanics(self)
+
     # --- display --------------------------------------------------------------------------------
     def __repr__(self) -> str:
         label = f" {self.name!r}" if self.name else ""
@@ -567,6 +578,14 @@ def _check_inputs(T, V, specs, presc, P, D, F, coords, problems) -> None:
                             "a coordinate; rename it")
         elif u.name in clash_params:
             problems.append(f"the input {u} and a parameter share the name {u.name!r}: rename one of them")
+
+
+def _not_a_coordinate(c) -> str:
+    if isinstance(c, AppliedUndef) and len(c.args) == 1 and isinstance(c.args[0], sp.Symbol):
+        return (f"{c} is a function of {c.args[0]!r}, which is not lagrange's time t: declare coordinates with "
+                "lagrange.coordinates('q1 q2'), or with sympy's dynamicsymbols at their default time Symbol('t')")
+    return (f"{c!r} is not a coordinate: declare coordinates with lagrange.coordinates('q1 q2'), "
+            "which gives functions of lagrange.t")
 
 
 def _substitute_constraint(c, presc):

@@ -58,3 +58,20 @@ def test_modes_and_hamiltonian_commands():
     assert "8.16496581" in out.stdout and "19.36491673" in out.stdout  # Wells: 8.16 and 19.37 rad/s
     out = run("hamiltonian", "ex3.3")
     assert out.returncode == 0 and "H =" in out.stdout and "dp_theta/dt =" in out.stdout
+
+
+def test_derive_prints_tidy_wrapped_equations():
+    """`lagrange derive` of Wells' double pendulum on strings: cos(φ − θ) instead of the products of sines and
+    cosines, no line wider than the terminal ($COLUMNS; 100 columns when it is unset and not a terminal)."""
+    import os
+    import unicodedata
+
+    width = 72
+    out = subprocess.run([sys.executable, "-m", "lagrange.cli", "derive", "ex12.2"], capture_output=True,
+                         text=True, timeout=300, env={**os.environ, "COLUMNS": str(width)})
+    assert out.returncode == 0, out.stderr
+    assert "cos(φ - θ)" in out.stdout and "sin(φ)⋅sin(θ)" not in out.stdout
+    lines = out.stdout.splitlines()
+    assert max(sum(1 for c in line if not unicodedata.combining(c)) for line in lines) <= width
+    assert max(len(line) for line in lines) > 60  # the width is used, not a narrow fixed default
+    assert "[constraint string2, multiplier λ2]" in lines

@@ -1,0 +1,1 @@
+"""Interop with other libraries' models (one module per library)."""

@@ -1,0 +1,327 @@
+r"""Two-way interop with :mod:`sympy.physics.mechanics`.
+
+* :func:`from_mechanics` reads a ``LagrangesMethod``, a ``KanesMethod``, a mechanics ``System``
+  (sympy ≥ 1.13) or a Lagrangian with its coordinates, and returns a :class:`lagrange.System` whose
+  equations agree with sympy's.
+* :func:`to_mechanics` (also :meth:`lagrange.System.to_mechanics`) returns a ``LagrangesMethod`` whose
+  equations agree with lagrange's.
+
+Time. sympy's ``dynamicsymbols`` are functions of ``Symbol('t')``; lagrange's time is the real
+:data:`lagrange.t`. Everything read from sympy has its time replaced by :data:`lagrange.t`
+(:func:`lagrange.model.coordinates.normalize_time`), and everything written to sympy the other way round,
+so the coordinates keep their names and the equations the same form.
+
+Energies. A Lagrangian is split as ``V = −L(q, q̇ = 0, t)`` and ``T = L + V`` (the velocity-dependent part).
+The equations and the Jacobi integral do not depend on the split; ``System.energy()`` is T + V, the true
+energy when nothing moves with time.
+
+Kane's models (``KanesMethod``, mechanics ``System``) are converted through their bodies and loads:
+``T = Σ body.kinetic_energy(frame)``, ``V = Σ body.potential_energy``, each load gives the generalized
+force ``Q_r = F · ∂v_P/∂q̇_r`` (``τ · ∂ω_B/∂q̇_r`` for a torque), after the generalized speeds are
+replaced by their expressions in q and q̇ from the kinematic differential equations. Configuration
+constraints become :class:`~lagrange.Holonomic` and velocity constraints :class:`~lagrange.Nonholonomic`.
+This is only sound when every velocity in the model is the time derivative of a position in the
+coordinates, so :func:`from_mechanics` checks it: a model that builds a non-holonomic constraint into its
+kinematics (sympy's rolling disc sets the contact point's velocity to zero instead of declaring the
+contact coordinates and the rolling constraints) is refused, as are auxiliary speeds. Its Kane's equations
+are right, but no Lagrangian T(q, q̇) has them.
+
+The other way, lagrange's non-potential generalized forces ``F_q + ∂P/∂q̇ − ∂D/∂q̇`` reach
+``LagrangesMethod`` as a force ``F_q`` along ``N.x`` at an auxiliary point whose velocity is ``q̇_r N.x``
+(partial velocity 1 for q_r, 0 for the others). Rough and unilateral constraints have no counterpart there
+and are refused.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+import sympy as sp
+from sympy.core.function import AppliedUndef
+
+from ..conventions import t
+from ..errors import DeclarationError
+from ..model.constraints import Holonomic, Nonholonomic
+from ..model.coordinates import SYMPY_TIME, coordinate_name, normalize_time
+from ..simplification import is_zero
+
+__all__ = ["from_mechanics", "to_mechanics"]
+
+
+def _me():
+    import sympy.physics.mechanics as me
+
+    return me
+
+
+# ------------------------------------------------------------------------------------------ from sympy
+
+def from_mechanics(obj, coordinates: Sequence | None = None, *, name: str = "", **system_options):
+    """A :class:`lagrange.System` from a :mod:`sympy.physics.mechanics` model.
+
+    Parameters
+    ----------
+    obj : LagrangesMethod, KanesMethod, sympy.physics.mechanics.System, or a Lagrangian expression
+        For a Lagrangian, ``coordinates`` must be given. A ``LagrangesMethod`` brings its Lagrangian,
+        coordinates, loads (``forcelist`` with its ``frame``) and holonomic and non-holonomic constraints; Kane's
+        models their bodies, loads, kinematic differential equations and constraints (see the module notes).
+    coordinates : sequence of dynamicsymbols (or lagrange coordinates), only with a Lagrangian
+    name : str, optional
+    **system_options
+        Passed on to :class:`lagrange.System` (``forces``, ``rayleigh``, ``P``, ``constraints``, ``parameters``
+        …); only with a Lagrangian.
+
+    Returns
+    -------
+    System
+        In lagrange's time :data:`lagrange.t`; the coordinates keep their names.
+
+    Raises
+    ------
+    DeclarationError (a ValueError)
+        An object of another type, a Kane's model whose kinematics are not holonomic (a velocity that is not
+        the time derivative of a position in the coordinates, an angular velocity that does not match the
+        orientation), auxiliary speeds, or loads that are not forces at points or torques on frames.
+    """
+    me = _me()
+    if isinstance(obj, me.LagrangesMethod):
+        _no_options(obj, coordinates, system_options)
+        return _from_lagranges_method(obj, name)
+    if isinstance(obj, me.KanesMethod):
+        _no_options(obj, coordinates, system_options)
+        if len(obj._uaux):
+            raise DeclarationError("KanesMethod with auxiliary speeds: they have no place in Lagrange's equations; "
+                                   "build the model without u_auxiliary")
+        q, u = list(obj.q), list(obj.u)
+        qd = [c.diff(SYMPY_TIME) for c in q]
+        kdes = list(obj._k_ku * obj.u + obj._k_kqdot * sp.Matrix(qd) + obj._f_k)
+        nonhol = list(obj._k_nh * obj.u + obj._f_nh) if len(obj._f_nh) else []
+        return _from_kane_model(obj._inertial, q, u, kdes, obj.bodies or (), obj.loads or (), list(obj._f_h),
+                                nonhol, name or "from KanesMethod")
+    if isinstance(obj, me.System):
+        _no_options(obj, coordinates, system_options)
+        if len(obj.u_aux):
+            raise DeclarationError("mechanics System with auxiliary speeds: build it without u_aux")
+        loads = tuple(obj.loads) + tuple(load for act in obj.actuators for load in act.to_loads())
+        return _from_kane_model(obj.frame, list(obj.q), list(obj.u), list(obj.kdes), obj.bodies, loads,
+                                list(obj.holonomic_constraints), list(obj.nonholonomic_constraints),
+                                name or "from mechanics System")
+    if isinstance(obj, (sp.Expr, int, float)) and not isinstance(obj, bool):
+        if coordinates is None:
+            raise DeclarationError("from_mechanics(L) needs the coordinates: from_mechanics(L, [q1, q2])")
+        T, V = _split_lagrangian(normalize_time(sp.sympify(obj)), normalize_time(list(coordinates)))
+        return _system(coordinates, T, V, name=name, **system_options)
+    raise DeclarationError(f"from_mechanics: cannot read {type(obj).__name__}: give a LagrangesMethod, a KanesMethod, "
+                           "a sympy.physics.mechanics.System or a Lagrangian with its coordinates")
+
+
+def _no_options(obj, coordinates, options) -> None:
+    if coordinates is not None or options:
+        extra = ["coordinates"] * (coordinates is not None) + sorted(options)
+        raise TypeError(f"from_mechanics({type(obj).__name__}) takes no {', '.join(extra)}: the model brings them")
+
+
+def _system(coordinates, T, V, **options):
+    from ..model.system import System
+
+    return System(list(coordinates), T=T, V=V, **options)
+
+
+def _split_lagrangian(L, coords) -> tuple:
+    """``(T, V)`` with ``V = −L(q, q̇ = 0, t)`` and ``T = L + V``."""
+    rest = L.subs({c.diff(t): 0 for c in coords})
+    return sp.expand(L - rest) if rest != 0 else L, -rest
+
+
+def _from_lagranges_method(lm, name: str):
+    q = list(lm.q)
+    forces = {}
+    if lm.forcelist:
+        if lm.inertial is None:
+            raise DeclarationError("LagrangesMethod with loads but no frame: its generalized forces need the "
+                                   "inertial frame (LagrangesMethod(..., frame=N))")
+        qd = [c.diff(SYMPY_TIME) for c in q]
+        forces = _generalized_forces(lm.forcelist, lm.inertial, q, qd, {})
+    constraints = [Holonomic(e, f"holonomic {k + 1}") for k, e in enumerate(lm._hol_coneqs)]
+    n_hol = len(lm._hol_coneqs)
+    constraints += [Nonholonomic(e, f"non-holonomic {k + 1}") for k, e in enumerate(lm.coneqs[n_hol:])]
+    T, V = _split_lagrangian(normalize_time(lm._L[0]), normalize_time(q))
+    return _system(q, T, V, forces=normalize_time(forces) or None, constraints=constraints,
+                   name=name or "from LagrangesMethod")
+
+
+def _load_parts(load):
+    me = _me()
+    if isinstance(load, (me.Force, me.Torque)):
+        return load.location, load.vector
+    if isinstance(load, (tuple, list)) and len(load) == 2:
+        return load[0], load[1]
+    raise DeclarationError(f"load {load!r} is neither a force at a point nor a torque on a frame")
+
+
+def _generalized_forces(loads, N, q, qd, u_map) -> dict:
+    """``{q_r: Σ F·∂v_P/∂q̇_r + Σ τ·∂ω_B/∂q̇_r}`` with speeds replaced by ``u_map``."""
+    me = _me()
+    out = {c: sp.S.Zero for c in q}
+    for load in loads:
+        where, vec = _load_parts(load)
+        if not isinstance(where, (me.Point, me.ReferenceFrame)):
+            raise DeclarationError(f"load {load!r} is applied to {where!r}, neither a Point nor a ReferenceFrame")
+        motion = _motion(where, N)
+        motion = motion.subs(u_map) if u_map else motion
+        vec = vec.subs(u_map) if u_map else vec
+        for c, v in zip(q, qd):
+            out[c] += sp.expand(vec.dot(motion.diff(v, N, var_in_dcm=False)))
+    return out
+
+
+def _motion(where, N):
+    """The velocity of a point or the angular velocity of a frame in N; a DeclarationError when undefined."""
+    me = _me()
+    try:
+        return where.vel(N) if isinstance(where, me.Point) else where.ang_vel_in(N)
+    except ValueError as exc:
+        raise DeclarationError(f"from_mechanics: the motion of {where.name} in {N.name} is not defined "
+                               f"({exc})") from None
+
+
+def _u_map(q, u, kdes) -> dict:
+    """The speeds in terms of q and q̇ from the kinematic differential equations (linear in u)."""
+    if not u:
+        return {}
+    if len(kdes) != len(u):
+        raise DeclarationError(f"{len(u)} generalized speeds but {len(kdes)} kinematic differential equations")
+    A, b = sp.linear_eq_to_matrix(list(kdes), list(u))
+    sol = A.LUsolve(b)
+    return dict(zip(u, (sp.simplify(s) if sp.count_ops(s) < 40 else s for s in sol)))
+
+
+def _from_kane_model(N, q, u, kdes, bodies, loads, hol, nonhol, name):
+    me = _me()
+    qd = [c.diff(SYMPY_TIME) for c in q]
+    if not bodies:
+        raise DeclarationError(f"{name}: the model has no bodies, so it has no kinetic energy (give them to "
+                               "kanes_equations(bodies, loads) or System.add_bodies)")
+    u_map = _u_map(q, u, kdes)
+    T, V = sp.S.Zero, sp.S.Zero
+    for body in bodies:
+        T += body.kinetic_energy(N)
+        V += sp.sympify(getattr(body, "potential_energy", 0))
+        _check_point(body.masscenter, N, q, qd, u_map, f"the mass centre of {body.name}")
+        if isinstance(body, me.RigidBody):
+            _check_frame(body.frame, N, q, qd, u_map, f"the frame of {body.name}")
+    for load in loads:
+        where, _ = _load_parts(load)
+        if isinstance(where, me.Point):
+            _check_point(where, N, q, qd, u_map, f"the point {where.name} of a load")
+        elif isinstance(where, me.ReferenceFrame):
+            _check_frame(where, N, q, qd, u_map, f"the frame {where.name} of a torque")
+    T = T.subs(u_map) if u_map else T
+    forces = _generalized_forces(loads, N, q, qd, u_map)
+    constraints = [Holonomic(e, f"configuration {k + 1}") for k, e in enumerate(hol)]
+    constraints += [Nonholonomic(sp.expand(e.subs(u_map) if u_map else e), f"velocity {k + 1}")
+                    for k, e in enumerate(nonhol)]
+    return _system(q, normalize_time(T), normalize_time(V), forces=normalize_time(forces), constraints=constraints,
+                   name=name)
+
+
+def _plain(q, qd):
+    """Plain symbols for q and q̇ (derivatives first), and the map."""
+    qs = [sp.Dummy(f"q{k}") for k in range(len(q))]
+    vs = [sp.Dummy(f"v{k}") for k in range(len(q))]
+    return qs, vs, {**dict(zip(qd, vs)), **dict(zip(q, qs))}
+
+
+def _non_holonomic_refusal(what: str, detail: str) -> DeclarationError:
+    return DeclarationError(
+        f"from_mechanics: {what} {detail}: the model builds a non-holonomic constraint into its kinematics "
+        "(e.g. rolling without slipping with the contact point's velocity set to zero), which no Lagrangian "
+        "T(q, q̇) can carry; declare the contact coordinates as coordinates and the rolling conditions as "
+        "velocity constraints (lagrange.Nonholonomic), or keep this model in KanesMethod")
+
+
+def _check_point(P, N, q, qd, u_map, what: str) -> None:
+    """The velocity of P in N must be exact: ``v = Σ a_j(q, t) q̇_j + b(q, t)`` with ``∂a_j/∂q_k = ∂a_k/∂q_j``
+    and ``∂a_j/∂t = ∂b/∂q_j`` in every inertial component — the time derivative of a position r(q, t)."""
+    v = _motion(P, N)
+    v = v.subs(u_map) if u_map else v
+    qs, vs, plain = _plain(q, qd)
+    ts = sp.Dummy("t")
+    for axis in (N.x, N.y, N.z):
+        c = sp.expand(v.dot(axis)).xreplace(plain).xreplace({SYMPY_TIME: ts})
+        if c.atoms(AppliedUndef):
+            raise _non_holonomic_refusal(what, f"has a velocity in {sorted(map(str, c.atoms(AppliedUndef)))}, which "
+                                         "are not coordinates or speeds of the model")
+        a = [sp.diff(c, s) for s in vs]
+        if any(sp.diff(ai, s) != 0 for ai in a for s in vs):
+            raise _non_holonomic_refusal(what, "has a velocity that is not linear in q̇")
+        b = sp.expand(c - sum(ai * s for ai, s in zip(a, vs)))
+        for j in range(len(q)):
+            residues = [sp.diff(a[j], ts) - sp.diff(b, qs[j])]
+            residues += [sp.diff(a[j], qs[k]) - sp.diff(a[k], qs[j]) for k in range(j + 1, len(q))]
+            if not all(r == 0 or is_zero(r) for r in residues):
+                raise _non_holonomic_refusal(
+                    what, f"moves with a velocity along {axis} that is not the time derivative of any position in "
+                    f"the coordinates ({', '.join(map(str, q))})")
+
+
+def _check_frame(B, N, q, qd, u_map, what: str) -> None:
+    """The angular velocity of B in N must be the one its orientation gives (``Ṙ Rᵀ``)."""
+    w = _motion(B, N)
+    w = w.subs(u_map) if u_map else w
+    try:
+        true = B._w_diff_dcm(N)
+    except (ValueError, AttributeError, TypeError):
+        raise _non_holonomic_refusal(what, "has no orientation relative to the inertial frame") from None
+    for axis in (N.x, N.y, N.z):
+        r = sp.expand((w - true).dot(axis))
+        if r != 0 and not is_zero(r):
+            raise _non_holonomic_refusal(what, f"turns with an angular velocity along {axis} that differs from the "
+                                         "time derivative of its orientation")
+
+
+# -------------------------------------------------------------------------------------------- to sympy
+
+def to_mechanics(system):
+    """A formed ``sympy.physics.mechanics.LagrangesMethod`` with the equations of ``system``.
+
+    ``L = T − V`` in sympy's time ``dynamicsymbols._t``; the non-potential generalized forces
+    ``F_q + ∂P/∂q̇ − ∂D/∂q̇`` enter as forces along ``N.x`` at auxiliary points moving with ``q̇_r N.x``
+    (see the module notes); holonomic constraints ``φ = 0`` go to ``hol_coneqs`` and non-holonomic ones
+    ``A q̇ + b = 0`` to ``nonhol_coneqs``. ``form_lagranges_equations()`` has been called, so
+    ``mass_matrix_full``, ``forcing_full`` and ``rhs()`` are ready. The coordinates are
+    ``dynamicsymbols`` with the names of the system's coordinates.
+
+    Raises
+    ------
+    DeclarationError (a ValueError)
+        Rough (friction) or unilateral constraints: LagrangesMethod has neither.
+    """
+    me = _me()
+    rough = [c.name for c in system.constraints if c.friction is not None]
+    one_sided = [c.name for c in system.constraints if c.unilateral]
+    if rough or one_sided:
+        parts = ([f"rough constraints ({', '.join(rough)})"] if rough else []) + (
+            [f"unilateral constraints ({', '.join(one_sided)})"] if one_sided else [])
+        raise DeclarationError(f"to_mechanics: {' and '.join(parts)} have no counterpart in LagrangesMethod")
+    ts = me.dynamicsymbols._t
+    # each coordinate becomes sympy's dynamicsymbols(name) (no assumptions), time becomes dynamicsymbols._t
+    back = {t: ts, **{c: sp.Function(coordinate_name(c))(ts) for c in system.coordinates}}
+
+    def s(e):
+        return sp.sympify(e).xreplace(back)
+
+    q = [s(c) for c in system.coordinates]
+    N = me.ReferenceFrame("N")
+    forcelist = []
+    for c, Q in system.generalized_forces().items():
+        if Q != 0:
+            P = me.Point(f"P_{coordinate_name(c)}")
+            P.set_vel(N, s(c.diff(t)) * N.x)
+            forcelist.append((P, s(Q) * N.x))
+    hol = [s(c.position) for c in system.constraints if c.kind == "holonomic"]
+    nonhol = [s(c.velocity) for c in system.constraints if c.kind != "holonomic"]
+    lm = me.LagrangesMethod(s(system.T - system.V), q, forcelist=forcelist or None, frame=N,
+                            hol_coneqs=hol or None, nonhol_coneqs=nonhol or None)
+    lm.form_lagranges_equations()
+    return lm

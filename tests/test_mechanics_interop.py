@@ -1,0 +1,341 @@
+"""Interop with sympy.physics.mechanics both ways: dynamicsymbols in declarations, from_mechanics, to_mechanics.
+
+The truth is sympy's own equations: accelerations from sympy's ``mass_matrix_full``/``forcing_full`` (Lagrange's
+or Kane's method) are compared with lagrange's generated code at random states, to 1e-10 relative, for sympy's
+pendulum (LagrangesMethod with a damping load), a cart-pole (KanesMethod and a mechanics System, with a rigid
+rod, a driving force and viscous friction) and the rolling disc (non-holonomic).
+"""
+
+import numpy as np
+import pytest
+import sympy as sp
+from sympy.physics import mechanics as me
+
+import lagrange as lg
+from lagrange import from_mechanics
+from lagrange.interop.mechanics import to_mechanics
+from lagrange.simplification import is_zero
+
+RTOL = 1e-10
+T_S = me.dynamicsymbols._t
+
+
+def _close(a, b, rtol=RTOL):
+    a, b = np.asarray(a, dtype=float), np.asarray(b, dtype=float)
+    scale = max(float(np.max(np.abs(a))), float(np.max(np.abs(b))), 1.0)
+    assert np.max(np.abs(a - b)) <= rtol * scale, f"\n{a}\n{b}"
+
+
+def _solve_full(method, values) -> np.ndarray:
+    """sympy's first-order form ``M_full x' = f_full`` solved at ``values``."""
+    Mf = np.array(method.mass_matrix_full.xreplace(values).evalf(), dtype=float)
+    ff = np.array(method.forcing_full.xreplace(values).evalf(), dtype=float).ravel()
+    return np.linalg.solve(Mf, ff)
+
+
+def _lagrange_accelerations(system, params, q, qd) -> np.ndarray:
+    model = system.compile({s.name: v for s, v in params.items()})
+    out = np.asarray(model.rhs(0.0, np.concatenate([q, qd]), model._pcall), dtype=float)
+    return out[len(q):]
+
+
+def _sympy_lagrange_accelerations(lm, params, coords, q, qd) -> np.ndarray:
+    n = len(coords)
+    values = {**params, **{c.diff(T_S): v for c, v in zip(coords, qd)}, **dict(zip(coords, q))}
+    return _solve_full(lm, values)[n:2 * n]
+
+
+# ------------------------------------------------------------------------------------- dynamicsymbols
+
+def test_dynamicsymbols_are_accepted_everywhere():
+    """The same model declared with sympy's dynamicsymbols and with lagrange's coordinates: rigid body, particle,
+    force with a velocity, holonomic and non-holonomic constraints; identical equations."""
+    m, l, g, c, I = lg.parameters("m l g c I")
+
+    def build(x, th, s):
+        d = x.args[0]  # lagrange.t, or sympy's Symbol('t')
+        rod = lg.RigidBody(m, (I, I, I), origin=(x + l * sp.sin(th), -l * sp.cos(th)), orientation=lg.rot_z(th))
+        bead = lg.Particle(m, (x, 0))
+        return lg.System([x, th, s], bodies=[rod, bead], V=-m * g * l * sp.cos(th) + m * g * s,
+                         forces=[lg.Force(bead, (-c * x.diff(d), 0)), {s: -c * s.diff(d)}],
+                         T=m * s.diff(d) ** 2 / 2,
+                         constraints=[lg.Holonomic(s - x * th),
+                                      lg.Nonholonomic(x.diff(d) - l * sp.cos(th) * s.diff(d))])
+
+    ours = build(*lg.coordinates("x theta s"))
+    theirs = build(*me.dynamicsymbols("x theta s"))
+    assert all(q.args == (lg.t,) for q in theirs.coordinates)
+    a, b = ours.derived, theirs.derived
+    assert [s.name for s in a.parameters] == [s.name for s in b.parameters]
+    for e1, e2 in zip(list(a.mass_matrix) + list(a.forcing) + list(a.constraint_matrix),
+                      list(b.mass_matrix) + list(b.forcing) + list(b.constraint_matrix)):
+        assert is_zero(e1 - e2)
+
+
+def test_another_time_symbol_is_refused_clearly():
+    tau = sp.Symbol("tau")
+    q = sp.Function("q")(tau)
+    with pytest.raises(lg.DeclarationError, match="tau, which is not lagrange's time t") as err:
+        lg.System([q], T=q.diff(tau) ** 2 / 2)
+    assert isinstance(err.value, ValueError)
+    x = me.dynamicsymbols("x")
+    with pytest.raises(lg.DeclarationError, match="symbol 't' that is not lagrange.t"):
+        lg.System([x], T=x.diff() ** 2 / 2 + sp.Symbol("t", positive=True))
+
+
+# ------------------------------------------------------------------------------- sympy's pendulum
+
+def _pendulum():
+    """sympy's docs pendulum (LagrangesMethod), with a viscous drag load on the bob."""
+    q = me.dynamicsymbols("q")
+    qd = q.diff(T_S)
+    m, l, g, b = sp.symbols("m l g b", positive=True)
+    N = me.ReferenceFrame("N")
+    A = N.orientnew("A", "Axis", [q, N.z])
+    A.set_ang_vel(N, qd * N.z)
+    O = me.Point("O")
+    O.set_vel(N, 0)
+    P = O.locatenew("P", l * A.x)
+    P.v2pt_theory(O, N, A)
+    bob = me.Particle("bob", P, m)
+    bob.potential_energy = -m * g * l * sp.cos(q)  # N.x points down
+    lm = me.LagrangesMethod(me.Lagrangian(N, bob), [q], forcelist=[(P, -b * P.vel(N))], frame=N)
+    lm.form_lagranges_equations()
+    return lm, [q], {m: 1.3, l: 0.8, g: 9.81, b: 0.35}
+
+
+def test_pendulum_both_ways():
+    lm, coords, params = _pendulum()
+    system = from_mechanics(lm)
+    assert isinstance(system, lg.System) and [c.func.__name__ for c in system.coordinates] == ["q"]
+    rng = np.random.default_rng(1)
+    back = to_mechanics(system)
+    assert isinstance(back, me.LagrangesMethod)
+    for _ in range(3):
+        q, qd = rng.uniform(-2, 2, 1), rng.uniform(-2, 2, 1)
+        expected = _sympy_lagrange_accelerations(lm, params, coords, q, qd)
+        _close(_lagrange_accelerations(system, params, q, qd), expected)
+        _close(_sympy_lagrange_accelerations(back, params, list(back.q), q, qd), expected)
+    # the energy split: V = −L(q, 0) is the bob's potential energy, T its kinetic energy
+    m, l, g = (next(s for s in params if s.name == n) for n in "mlg")
+    qq = system.coordinates[0]
+    assert is_zero(system.V + m * g * l * sp.cos(qq)) and is_zero(system.T - m * l**2 * qq.diff(lg.t) ** 2 / 2)
+
+
+# ------------------------------------------------------------------------------------- cart-pole
+
+def _cart_pole_parts():
+    """A cart (mass M, viscous friction c, driving force F cos ω t) carrying a uniform rod (m, l) on a damped
+    pivot (d): sympy's cart-pole with generalized speeds u = q̇."""
+    x, th = me.dynamicsymbols("x theta")
+    u1, u2 = me.dynamicsymbols("u1 u2")
+    M, m, l, g, c, d, F, w = sp.symbols("M m l g c d F omega", positive=True)
+    N = me.ReferenceFrame("N")
+    O = me.Point("O")
+    O.set_vel(N, 0)
+    cart_point = O.locatenew("Pc", x * N.x)
+    cart_point.set_vel(N, u1 * N.x)
+    B = N.orientnew("B", "Axis", [th, N.z])
+    B.set_ang_vel(N, u2 * N.z)
+    G = cart_point.locatenew("G", -l / 2 * B.y)
+    G.v2pt_theory(cart_point, N, B)
+    cart = me.Particle("cart", cart_point, M)
+    rod = me.RigidBody("rod", G, B, m, (me.inertia(B, m * l**2 / 12, 0, m * l**2 / 12), G))
+    loads = [me.Force(cart_point, (F * sp.cos(w * T_S) - c * u1) * N.x), me.Torque(B, -d * u2 * N.z),
+             me.Force(G, -m * g * N.y), me.Force(cart_point, -M * g * N.y)]
+    kd = [x.diff(T_S) - u1, th.diff(T_S) - u2]
+    params = {M: 2.0, m: 0.7, l: 1.1, g: 9.81, c: 0.3, d: 0.05, F: 1.5, w: 2.2}
+    return N, O, [x, th], [u1, u2], kd, [cart, rod], loads, params
+
+
+def _kane_accelerations(method, coords, speeds, params, q, qd, t0) -> np.ndarray:
+    """u̇ = q̈ (u = q̇ here) from sympy's first-order form at time t0."""
+    values = {**params, **dict(zip(speeds, qd)), **dict(zip(coords, q)), T_S: t0}
+    return _solve_full(method, values)[len(coords):]
+
+
+def test_cart_pole_from_kanes_method_and_mechanics_system_both_ways():
+    N, O, coords, speeds, kd, bodies, loads, params = _cart_pole_parts()
+    kane = me.KanesMethod(N, coords, speeds, kd_eqs=kd)
+    kane.kanes_equations(bodies, loads)
+    from_kane = from_mechanics(kane)
+
+    msys = me.System(N, O)
+    msys.add_coordinates(*coords)
+    msys.add_speeds(*speeds)
+    msys.add_kdes(*kd)
+    msys.add_bodies(*bodies)
+    msys.add_loads(*loads)
+    msys.form_eoms()
+    from_system = from_mechanics(msys)
+
+    back = from_kane.to_mechanics()
+    rng = np.random.default_rng(2)
+    for _ in range(3):
+        q, qd, t0 = rng.uniform(-1.5, 1.5, 2), rng.uniform(-2, 2, 2), rng.uniform(0, 3)
+        expected = _kane_accelerations(kane, coords, speeds, params, q, qd, t0)
+        _close(_kane_accelerations(msys, coords, speeds, params, q, qd, t0), expected)  # sympy agrees with itself
+        for system in (from_kane, from_system):
+            model = system.compile({s.name: v for s, v in params.items()})
+            got = np.asarray(model.rhs(t0, np.concatenate([q, qd]), model._pcall), dtype=float)[2:]
+            _close(got, expected)
+        values = {**params, **{c.diff(T_S): v for c, v in zip(back.q, qd)}, **dict(zip(back.q, q)), T_S: t0}
+        _close(_solve_full(back, values)[2:4], expected)
+    assert not from_kane.derived.is_autonomous  # the driving force keeps its explicit time
+
+
+# ------------------------------------------------------------------------------------- rolling disc
+
+def _rolling_disc_kane():
+    """sympy's docs rolling disc (KanesMethod): yaw, lean, spin and body rates; the contact point's velocity is
+    set to zero, so rolling is built into the kinematics and the contact position is not a coordinate."""
+    q1, q2, q3, u1, u2, u3 = me.dynamicsymbols("q1 q2 q3 u1 u2 u3")
+    r, m, g = sp.symbols("r m g", positive=True)
+    N = me.ReferenceFrame("N")
+    Y = N.orientnew("Y", "Axis", [q1, N.z])
+    L = Y.orientnew("L", "Axis", [q2, Y.x])
+    R = L.orientnew("R", "Axis", [q3, L.y])
+    w_R_N_qd = R.ang_vel_in(N)
+    R.set_ang_vel(N, u1 * L.x + u2 * L.y + u3 * L.z)
+    C = me.Point("C")
+    C.set_vel(N, 0)
+    Dmc = C.locatenew("Dmc", r * L.z)
+    Dmc.v2pt_theory(C, N, R)
+    disc = me.RigidBody("disc", Dmc, R, m, (me.inertia(L, m * r**2 / 4, m * r**2 / 2, m * r**2 / 4), Dmc))
+    kd = [me.dot(R.ang_vel_in(N) - w_R_N_qd, uv) for uv in L]
+    kane = me.KanesMethod(N, [q1, q2, q3], [u1, u2, u3], kd_eqs=kd)
+    kane.kanes_equations([disc], [(Dmc, -m * g * Y.z)])
+    return kane
+
+
+def _rolling_disc_lagranges_method():
+    """The rolling disc with the contact point (x, y) as coordinates and the two rolling conditions as
+    non-holonomic constraints (LagrangesMethod)."""
+    x, y, q1, q2, q3 = me.dynamicsymbols("x y q1 q2 q3")
+    m, g, r = sp.symbols("m g r", positive=True)
+    N = me.ReferenceFrame("N")
+    Y = N.orientnew("Y", "Axis", [q1, N.z])
+    L = Y.orientnew("L", "Axis", [q2, Y.x])
+    R = L.orientnew("R", "Axis", [q3, L.y])
+    O = me.Point("O")
+    O.set_vel(N, 0)
+    C = O.locatenew("C", x * N.x + y * N.y)
+    Dmc = C.locatenew("Dmc", r * L.z)
+    Dmc.set_vel(N, Dmc.pos_from(O).dt(N))
+    disc = me.RigidBody("disc", Dmc, R, m, (me.inertia(L, m * r**2 / 4, m * r**2 / 2, m * r**2 / 4), Dmc))
+    disc.potential_energy = m * g * r * sp.cos(q2)
+    contact = Dmc.locatenew("P", -r * L.z)
+    v_contact = contact.v2pt_theory(Dmc, N, R)
+    lm = me.LagrangesMethod(me.Lagrangian(N, disc), [x, y, q1, q2, q3],
+                            nonhol_coneqs=[v_contact.dot(N.x), v_contact.dot(N.y)], frame=N)
+    lm.form_lagranges_equations()
+    return lm, [x, y, q1, q2, q3], {m: 2.0, g: 9.81, r: 0.4}
+
+
+def test_rolling_disc_with_rolling_in_the_kinematics_is_refused():
+    with pytest.raises(lg.DeclarationError, match="non-holonomic constraint into its kinematics") as err:
+        from_mechanics(_rolling_disc_kane())
+    assert "mass centre of disc" in str(err.value) and isinstance(err.value, ValueError)
+
+
+def test_rolling_disc_both_ways():
+    lm, coords, params = _rolling_disc_lagranges_method()
+    system = from_mechanics(lm)
+    assert [c.kind for c in system.constraints] == ["nonholonomic", "nonholonomic"]
+    back = system.to_mechanics()
+    rv = params[next(s for s in params if s.name == "r")]
+    rng = np.random.default_rng(3)
+    for _ in range(2):
+        q = rng.uniform(-1, 1, 5)
+        w1, w2, w3 = rng.uniform(-2, 2, 3)
+        qd = np.array([rv * np.cos(q[2]) * w3, rv * np.sin(q[2]) * w3, w1, w2, w3])  # rolling without slipping
+        values = {**params, **{c.diff(T_S): v for c, v in zip(coords, qd)}, **dict(zip(coords, q))}
+        expected = _solve_full(lm, values)[5:10]
+        _close(_lagrange_accelerations(system, params, q, qd), expected)
+        values = {**params, **{c.diff(T_S): v for c, v in zip(back.q, qd)}, **dict(zip(back.q, q))}
+        _close(_solve_full(back, values)[5:10], expected)
+
+
+# ------------------------------------------------------------------------------------- refusals
+
+def test_what_cannot_be_converted_is_refused():
+    x, y = lg.coordinates("x y")
+    m, g, mu = lg.parameters("m g mu")
+    free = dict(T=m * (x.diff(lg.t) ** 2 + y.diff(lg.t) ** 2) / 2, V=m * g * y)
+    floor = lg.System([x, y], **free, constraints=[lg.Holonomic(y, "floor", unilateral=True)])
+    with pytest.raises(lg.DeclarationError, match=r"unilateral constraints \(floor\)"):
+        floor.to_mechanics()
+    rough = lg.System([x, y], **free, constraints=[lg.Rough(y, mu, x.diff(lg.t), "rough floor")])
+    with pytest.raises(lg.DeclarationError, match=r"rough constraints \(rough floor\)"):
+        rough.to_mechanics()
+    with pytest.raises(lg.DeclarationError, match="needs the coordinates"):
+        from_mechanics(x.diff(lg.t) ** 2)
+    with pytest.raises(lg.DeclarationError, match="cannot read str"):
+        from_mechanics("x**2")
+    lm, _, _ = _pendulum()
+    with pytest.raises(TypeError, match="takes no coordinates"):
+        from_mechanics(lm, [x])
+    # a plain Lagrangian with its coordinates, mixed with lagrange's own options (a Rayleigh function)
+    q = me.dynamicsymbols("q")
+    k, c = sp.symbols("k c", positive=True)
+    s = from_mechanics(q.diff() ** 2 / 2 - k * q**2 / 2, [q], rayleigh=c * q.diff() ** 2 / 2)
+    qq = s.coordinates[0]
+    assert is_zero(s.V - k * qq**2 / 2) and is_zero(s.forcing[0] + k * qq + c * qq.diff(lg.t))
+
+
+@pytest.mark.slow  # about 10 s of CPU: Kane's equations of a 5-coordinate model with dependent speeds
+def test_rolling_disc_from_kanes_method_with_velocity_constraints():
+    """The rolling disc as Kane's model with the contact point as coordinates and dependent speeds: its velocity
+    constraints become lagrange.Nonholonomic; accelerations agree with Kane's at rolling states."""
+    qs = me.dynamicsymbols("x y q1 q2 q3")
+    us = me.dynamicsymbols("u1:6")
+    m, g, r = sp.symbols("m g r", positive=True)
+    x, y, q1, q2, q3 = qs
+    to_u = {q.diff(T_S): u for q, u in zip(qs, us)}
+    N = me.ReferenceFrame("N")
+    Y = N.orientnew("Y", "Axis", [q1, N.z])
+    L = Y.orientnew("L", "Axis", [q2, Y.x])
+    R = L.orientnew("R", "Axis", [q3, L.y])
+    R.set_ang_vel(N, R.ang_vel_in(N).subs(to_u))
+    O = me.Point("O")
+    O.set_vel(N, 0)
+    Dmc = O.locatenew("Dmc", x * N.x + y * N.y + r * L.z)
+    Dmc.set_vel(N, Dmc.pos_from(O).dt(N).subs(to_u))
+    disc = me.RigidBody("disc", Dmc, R, m, (me.inertia(L, m * r**2 / 4, m * r**2 / 2, m * r**2 / 4), Dmc))
+    v_contact = Dmc.locatenew("P", -r * L.z).v2pt_theory(Dmc, N, R)
+    kane = me.KanesMethod(N, list(qs), us[2:], kd_eqs=[q.diff(T_S) - u for q, u in zip(qs, us)], u_dependent=us[:2],
+                          velocity_constraints=[v_contact.dot(N.x), v_contact.dot(N.y)])
+    kane.kanes_equations([disc], [(Dmc, -m * g * N.z)])
+    system = from_mechanics(kane)
+    assert [c.kind for c in system.constraints] == ["nonholonomic", "nonholonomic"]
+    params = {m: 2.0, g: 9.81, r: 0.4}
+    rng = np.random.default_rng(4)
+    q = rng.uniform(-1, 1, 5)
+    w1, w2, w3 = rng.uniform(-2, 2, 3)
+    qd = np.array([0.4 * np.cos(q[2]) * w3, 0.4 * np.sin(q[2]) * w3, w1, w2, w3])
+    values = {**params, **dict(zip(us, qd)), **dict(zip(qs, q))}
+    udot = dict(zip(kane.u, _solve_full(kane, values)[5:]))  # Kane orders the speeds independent first
+    _close(_lagrange_accelerations(system, params, q, qd), [udot[u] for u in us])
+
+
+def test_a_lagrange_model_to_mechanics_keeps_every_force():
+    """Declared with lagrange's own coordinates: a Cartesian pendulum on a length constraint with Wells' power
+    function (drag), a Rayleigh function and a driving force with explicit t. The LagrangesMethod is in sympy's
+    dynamicsymbols and its accelerations equal lagrange's at a consistent state."""
+    x, y = lg.coordinates("x y")
+    m, g, l, b, c, F, w = lg.parameters("m g l b c F omega")
+    tt = lg.t
+    system = lg.System([x, y], bodies=[lg.Particle(m, (x, y))], V=m * g * y, P=-b * x.diff(tt) ** 2 / 2,
+                       rayleigh=c * y.diff(tt) ** 2 / 2, forces=[{x: F * sp.cos(w * tt)}],
+                       constraints=[lg.Holonomic(x**2 + y**2 - l**2, "rod")])
+    lm = to_mechanics(system)
+    assert list(lm.q) == list(me.dynamicsymbols("x y"))
+    params = {m: 1.2, g: 9.81, l: 0.9, b: 0.3, c: 0.2, F: 0.8, w: 1.7}
+    q = 0.9 * np.array([np.sin(0.5), -np.cos(0.5)])
+    qd = 1.3 * np.array([np.cos(0.5), np.sin(0.5)])  # tangent to the circle
+    t0 = 0.6
+    model = system.compile({s.name: v for s, v in params.items()})
+    ours = np.asarray(model.rhs(t0, np.concatenate([q, qd]), model._pcall), dtype=float)[2:]
+    values = {**{sp.Symbol(s.name): v for s, v in params.items()}, **params, T_S: t0,
+              **{c_.diff(T_S): v for c_, v in zip(lm.q, qd)}, **dict(zip(lm.q, q))}
+    _close(_solve_full(lm, values)[2:4], ours)
