@@ -150,32 +150,22 @@ def terminal_width(default: int = WIDTH) -> int:
     return max(40, shutil.get_terminal_size((default, 24)).columns)
 
 
-def _split_term(term, printer, room: int) -> list:
-    """``term`` as a list of summands each narrower than ``room`` where possible: a product wider than the
-    room is distributed over its widest sum factor (recursively); anything else stays whole."""
-    form = printer._print(term)
-    if form.width() <= room or not term.is_Mul:
-        return [term]
-    adds = [f for f in term.args if f.is_Add]
-    if not adds:
-        return [term]
-    widest = max(adds, key=lambda f: printer._print(f).width())
-    rest = sp.Mul(*[f for f in term.args if f is not widest])
-    out = []
-    for a in widest.as_ordered_terms():
-        out += _split_term(rest * a, printer, room)
-    return out
-
-
 def _pieces(side, printer, room: int) -> list:
-    """``[(sign, picture)]`` of the summands of ``side`` in print order, sign ``"+"`` or ``"-"``."""
+    """``[(sign, picture)]`` of the summands of ``side`` in print order, sign ``"+"`` or ``"-"``; a product wider
+    than ``room`` is distributed over its largest sum factor (recursively), anything else stays whole."""
+
+    def split(term) -> list:
+        negative = term.could_extract_minus_sign()
+        form = printer._print(-term if negative else term)
+        adds = [f for f in term.args if f.is_Add] if term.is_Mul and form.width() > room else []
+        if not adds:
+            return [("-" if negative else "+", form)]
+        widest = max(adds, key=sp.count_ops)
+        rest = sp.Mul(*[f for f in term.args if f is not widest])
+        return [piece for a in widest.as_ordered_terms() for piece in split(rest * a)]
+
     terms = side.as_ordered_terms() if side.is_Add else [side]
-    out = []
-    for term in terms:
-        for piece in _split_term(term, printer, room):
-            negative = piece.could_extract_minus_sign()
-            out.append(("-" if negative else "+", printer._print(-piece if negative else piece)))
-    return out
+    return [piece for term in terms for piece in split(term)]
 
 
 def format_expression(expr, width: int = WIDTH, indent: str = "") -> str:

@@ -339,3 +339,23 @@ def test_a_lagrange_model_to_mechanics_keeps_every_force():
     values = {**{sp.Symbol(s.name): v for s, v in params.items()}, **params, T_S: t0,
               **{c_.diff(T_S): v for c_, v in zip(lm.q, qd)}, **dict(zip(lm.q, q))}
     _close(_solve_full(lm, values)[2:4], ours)
+
+
+def test_mechanics_system_built_from_joints():
+    """sympy ≥ 1.13's System API: a compound pendulum on a PinJoint with uniform gravity (the joint brings the
+    coordinates, speeds, kinematic equations and kinematics)."""
+    q, u = me.dynamicsymbols("q u")
+    m, l, g, inertia = sp.symbols("m l g I", positive=True)
+    ground = me.RigidBody("ground")
+    link = me.RigidBody("link", mass=m)
+    link.inertia = (me.inertia(link.frame, 0, 0, inertia), link.masscenter)
+    joint = me.PinJoint("pin", ground, link, coordinates=q, speeds=u, child_point=-l * link.x, joint_axis=ground.z)
+    msys = me.System.from_newtonian(ground)
+    msys.add_joints(joint)
+    msys.apply_uniform_gravity(-g * ground.y)
+    msys.form_eoms()
+    system = from_mechanics(msys)
+    params = {m: 1.1, l: 0.6, g: 9.81, inertia: 0.07}
+    for angle, rate in ((0.3, 0.7), (-2.0, 1.5)):
+        expected = _kane_accelerations(msys, [q], [u], params, [angle], [rate], 0.0)
+        _close(_lagrange_accelerations(system, params, np.array([angle]), np.array([rate])), expected)
