@@ -159,7 +159,7 @@ def test_values_of_cancelled_parameters_are_accepted_with_a_warning():
     with pytest.warns(lg.UnusedParameterWarning):
         s.compile(full)
     with pytest.raises(lg.ParameterError, match="unknown parameter.*zz"):
-        s.simulate(1.0, {x: 1.0, "x_dot": 0.0}, {**full, "zz": 1.0})
+        s.simulate(1.0, {x: 1.0, "x_dot": 0.0}, {"m": 1.0, "k": 4.0, "zz": 1.0})
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         s.compile({"m": 1.0, "k": 4.0})  # nothing to ignore: no warning
