@@ -119,6 +119,11 @@ class LinearModel:
         w2 = sp.Symbol("w2")
         return solve((self.a * w2 - self.c).det(), w2, what="the frequency equation")
 
+    def _repr_latex_(self) -> str:
+        from ..display import linear_model_latex
+
+        return linear_model_latex(self)
+
 
 def linearize(system, about: Mapping | None = None, velocities: Mapping | None = None) -> LinearModel:
     """Linearize about ``q₀`` (default 0) with reference velocities (default 0; non-zero for a steady motion
@@ -197,6 +202,11 @@ class Modes:
         for k, w in enumerate(self.omega):
             g[:, k] = A[k] * np.cos(w * times + ph[k]) if w > 1e-12 else A[k] + ph[k] * times
         return g @ self.shapes.T
+
+    def _repr_html_(self) -> str:
+        from ..display import modes_html
+
+        return modes_html(self)
 
 
 def normal_modes(linear: LinearModel, params: Mapping) -> Modes:
