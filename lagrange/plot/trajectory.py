@@ -17,7 +17,7 @@ import numpy as np
 from ..errors import LagrangeError
 from ..model.coordinates import coordinate_name, is_coordinate
 
-__all__ = ["plot_trajectory", "select_coordinates", "new_figure", "multiplier_labels"]
+__all__ = ["plot_trajectory", "select_coordinates", "new_figure", "multiplier_labels", "PlotError"]
 
 
 class PlotError(LagrangeError, ValueError):
