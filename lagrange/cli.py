@@ -147,7 +147,7 @@ def _cmd_simulate(args) -> int:
     label = "energy drift" if sol.work is None else "power-balance residual"
     print(f"{label} (relative): {sol.energy_error():.3e}")
     if args.plot:
-        sol.plot(args.plot, title=spec.label)
+        sol.plot(args.plot, title=spec.system.name or spec.label)
         print(f"plot written to {args.plot}")
     if args.csv:
         sol.to_csv(args.csv)
@@ -171,12 +171,10 @@ def _greenspan_report(label, t, vertices, fell, fall_time, extra: str, plot: str
     print(f"  the top falls at t = {fall_time:.6g}" if fell else "  the top does not fall")
     print(f"  {extra}")
     if plot:
-        import matplotlib
+        from .plot.trajectory import new_figure
 
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-
-        fig, ax = plt.subplots(1, 3, figsize=(14, 4.2), constrained_layout=True)
+        fig = new_figure(plot, figsize=(14, 4.2), layout="constrained")  # own Agg canvas: backend untouched
+        ax = fig.subplots(1, 3)
         ax[0].plot(sm.P1[:, 0], sm.P1[:, 1], lw=0.7)
         ax[0].set_title("P1 in the plane")
         ax[0].set_aspect("equal")

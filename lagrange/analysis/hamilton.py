@@ -65,6 +65,11 @@ class HamiltonianForm:
         """H with q as coordinate functions (for printing next to the equations)."""
         return to_functions(self.H, self.coordinates)
 
+    def _repr_latex_(self) -> str:
+        from ..display import hamiltonian_latex
+
+        return hamiltonian_latex(self)
+
 
 def hamiltonian(system) -> HamiltonianForm:
     """The Hamiltonian form of an unconstrained system (Wells ch. 16).

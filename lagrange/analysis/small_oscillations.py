@@ -210,6 +210,11 @@ class LinearModel:
         w2 = sp.Symbol("w2")
         return solve((a * w2 - c).det(), w2, what="the frequency equation")
 
+    def _repr_latex_(self) -> str:
+        from ..display import linear_model_latex
+
+        return linear_model_latex(self)
+
 
 def coordinate_of(v):
     """The coordinate function of a velocity ``q.diff(t)``."""
@@ -424,6 +429,11 @@ class Modes:
         for k, w in enumerate(self.omega):
             g[:, k] = A[k] * np.cos(w * times + ph[k]) if w > 1e-12 else A[k] + ph[k] * times
         return g @ self.shapes.T
+
+    def _repr_html_(self) -> str:
+        from ..display import modes_html
+
+        return modes_html(self)
 
 
 def _linear(linear, params, kw: dict) -> LinearModel:

@@ -86,7 +86,7 @@ def heyoka_model(system, params: Mapping) -> HeyokaModel:
     ``heyoka.lagrangian`` takes (constraints, applied forces, dry friction, explicit time).
     """
     if not heyoka_available():
-        raise BackendError("heyoka is not installed: pip install \"lagrange[heyoka]\"")
+        raise BackendError("heyoka is not installed: pip install \"lagrange-dynamics[heyoka]\"")
     import heyoka as hy
 
     eqs = system.derived

@@ -40,7 +40,7 @@ def _require_numba(what: str):
     try:
         import numba
     except ImportError as exc:  # pragma: no cover - exercised when numba is absent
-        raise BackendError(f"{what} needs numba: install it with `pip install lagrange[fast]`") from exc
+        raise BackendError(f"{what} needs numba: install it with `pip install \"lagrange-dynamics[fast]\"`") from exc
     return numba
 
 

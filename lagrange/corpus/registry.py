@@ -67,8 +67,9 @@ def get_problem(problem_id: str) -> Problem:
     # fast path: module chNN_<id> (variants "id-suffix" live in the module of "id"), so the CLI does not
     # import the whole corpus to run one problem
     stem = "_" + key.split("-")[0].replace(".", "_")
+    base = re.sub(r"(\d)[a-z]+$", r"\1", stem)  # "ex13.7a" lives in the module of ex13.7
     for name in _module_names():
-        if name.lower().endswith(stem) or stem + "_" in name.lower() + "_":
+        if any(name.lower().endswith(s_) or s_ + "_" in name.lower() + "_" for s_ in {stem, base}):
             for p in _module_problems(name):
                 if p.id.lower() == key:
                     return p

@@ -120,7 +120,7 @@ def loop_backend(loop: str, *, backend: str, model: NumericModel | None) -> str:
     if loop not in LOOPS:
         raise TypeError(f"loop must be one of {', '.join(map(repr, LOOPS))}, got {loop!r}")
     if loop == "compiled" and not _numba_available():
-        raise BackendError("loop='compiled' needs numba: install it with `pip install lagrange[fast]`")
+        raise BackendError("loop='compiled' needs numba: install it with `pip install \"lagrange-dynamics[fast]\"`")
     if model is not None:
         return model.backend
     return ("numba" if _numba_available() else "python") if backend == "auto" else backend

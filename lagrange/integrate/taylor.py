@@ -96,7 +96,7 @@ def interpreter(engine: str = "auto") -> str:
         raise BackendError(f"the C Taylor interpreter is unavailable: {c_taylor.unavailable_reason()}")
     if _numba_available():
         return "numba"
-    raise BackendError("method='taylor' needs a C compiler or numba (`pip install lagrange[fast]`); C: "
+    raise BackendError("method='taylor' needs a C compiler or numba (`pip install \"lagrange-dynamics[fast]\"`); C: "
                        f"{c_taylor.unavailable_reason()}")
 
 

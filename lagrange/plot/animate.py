@@ -4,7 +4,7 @@ Particles are dots, rods join consecutive points (``links="chain"``, from the fi
 you list, rigid bodies are drawn as their body-axis frame at the centre of mass. 2D when every point
 stays in the plane z = 0, 3D otherwise. The result is a matplotlib ``FuncAnimation``; save it as GIF
 (Pillow, always available) or MP4 (needs ffmpeg), or show it inline in Jupyter with
-:func:`animation_html`.
+``animate(..., inline=True)`` (an :class:`InlineAnimation`, HTML with the frames embedded).
 """
 
 from __future__ import annotations
@@ -19,7 +19,7 @@ from ..conventions import t
 from ..errors import LagrangeError
 from ..model.coordinates import to_symbols
 
-__all__ = ["animate", "animation_html", "scene_points"]
+__all__ = ["animate", "animation_html", "scene_points", "InlineAnimation"]
 
 
 def _body_points(system):
@@ -62,29 +62,70 @@ def scene_points(system, trajectory) -> tuple[np.ndarray, list]:
     return P, axes
 
 
+class InlineAnimation:
+    """An animation as a self-contained HTML/JavaScript player (frames embedded as PNG).
+
+    Jupyter shows it through :meth:`_repr_html_`; ``html`` is the markup, ``frames`` the number of frames.
+    No IPython needed: any front end that renders ``_repr_html_`` shows it, and ``save`` writes a page.
+    """
+
+    def __init__(self, html: str, frames: int):
+        self.html = html
+        self.frames = frames
+
+    def _repr_html_(self) -> str:
+        return self.html
+
+    def save(self, path: str | Path) -> Path:
+        """Write the player as a standalone HTML page."""
+        path = Path(path)
+        path.write_text(self.html, encoding="utf-8")
+        return path
+
+    def __repr__(self) -> str:
+        return f"<InlineAnimation: {self.frames} frames, {len(self.html) / 1e3:.0f} kB of HTML>"
+
+
 def animate(system, trajectory, path: str | Path | None = None, *, links: str | Sequence = "chain",
-            frames: int = 150, fps: int = 25, trail: int = 40, title: str | None = None):
+            frames: int = 150, fps: int = 25, trail: int = 40, title: str | None = None,
+            inline: bool = False, dpi: int = 60, size: float = 6.0):
     """Animate ``trajectory`` of ``system``; write it to ``path`` (``.gif`` or ``.mp4``) when given.
+
+    The user's matplotlib backend is never changed: to write a file or build an inline player the figure
+    is made on its own Agg canvas, outside pyplot; otherwise (to show it with ``plt.show()``) pyplot makes it.
 
     Parameters
     ----------
     links : ``"chain"`` (origin → point 1 → point 2 …), ``"none"``, or a list of index pairs (−1 = origin)
     frames : number of frames (evenly spaced over the output times)
     trail : length of the fading path drawn behind the last point
-    """
-    import matplotlib
+    title : default: the system's name
+    inline : return an :class:`InlineAnimation` (HTML player for Jupyter: ``frames`` PNGs at ``dpi`` of a
+        ``size`` inch square figure; keep both small, about 60 frames at 60 dpi is 0.3 MB) instead of the
+        ``FuncAnimation``; a file is still written when ``path`` is given
+    dpi, size : resolution and side (inches) of the frames of an inline player
 
+    Returns
+    -------
+    InlineAnimation when ``inline``; else the ``Path`` written when ``path`` is given; else a
+    ``matplotlib.animation.FuncAnimation`` (show it with ``plt.show()``)
+
+    Raises
+    ------
+    LagrangeError
+        no bodies to draw, unknown parameter values, an unsupported file type, MP4 without ffmpeg.
+    """
     if path is not None:
         suffix = Path(path).suffix.lower()
         if suffix not in (".gif", ".mp4"):
-            raise LagrangeError(f"cannot save an animation as {suffix!r}: use .gif or .mp4")
+            raise LagrangeError(f"cannot save an animation as {suffix!r}: use .gif or .mp4 (or inline=True)")
         from matplotlib.animation import writers
 
         if suffix == ".mp4" and not writers.is_available("ffmpeg"):
             raise LagrangeError("saving MP4 needs ffmpeg on the PATH; save as .gif instead")
-        matplotlib.use("Agg", force=False)
-    import matplotlib.pyplot as plt
     from matplotlib.animation import FuncAnimation
+
+    from .trajectory import new_figure
 
     P, axes = scene_points(system, trajectory)
     idx = np.linspace(0, len(trajectory.t) - 1, min(frames, len(trajectory.t))).round().astype(int)
@@ -100,7 +141,8 @@ def animate(system, trajectory, path: str | Path | None = None, *, links: str | 
     planar = np.allclose(P[:, :, 2], 0.0)
     span = float(np.max(np.abs(P))) or 1.0
     L = 0.25 * span
-    fig = plt.figure(figsize=(6, 6))
+    offscreen = path is not None or inline
+    fig = new_figure("file" if offscreen else None, figsize=(size, size))
     ax = fig.add_subplot(111) if planar else fig.add_subplot(111, projection="3d")
     lim = (-1.1 * span, 1.1 * span)
     ax.set_xlim(*lim)
@@ -110,6 +152,10 @@ def animate(system, trajectory, path: str | Path | None = None, *, links: str | 
     else:
         ax.set_zlim(*lim)
     ax.set_title(title or system.name or "")
+    if inline:  # tick labels are most of the drawing time of a frame; the scale is in the title
+        ax.tick_params(labelbottom=False, labelleft=False, bottom=False, left=False)
+        if not planar:
+            ax.set_zticklabels([])
 
     def xyz(pts):
         return (pts[:, 0], pts[:, 1]) if planar else (pts[:, 0], pts[:, 1], pts[:, 2])
@@ -142,21 +188,49 @@ def animate(system, trajectory, path: str | Path | None = None, *, links: str | 
         label.set_text(f"t = {times[f]:.3g}")
         return [dots, *rods, path_line, label, *(l for ls in frame_lines for l in ls)]
 
-    anim = FuncAnimation(fig, update, frames=len(idx), interval=1000 / fps, blit=False)
     if path is not None:
         path = Path(path)
         if path.suffix.lower() == ".gif":
             from matplotlib.animation import PillowWriter
 
-            anim.save(path, writer=PillowWriter(fps=fps))
+            _record(fig, update, len(idx), PillowWriter(fps=fps), path, fig.dpi)
         else:
-            anim.save(path, writer="ffmpeg", fps=fps)
-        plt.close(fig)
-    return anim
+            from matplotlib.animation import FFMpegWriter
+
+            _record(fig, update, len(idx), FFMpegWriter(fps=fps), path, fig.dpi)
+    if inline:
+        return _inline(fig, update, len(idx), fps, dpi)
+    if path is not None:
+        return path
+    return FuncAnimation(fig, update, frames=len(idx), interval=1000 / fps, blit=False)
 
 
-def animation_html(anim):
-    """Inline HTML (JavaScript player) of an animation for Jupyter."""
-    from IPython.display import HTML
+def _record(fig, update, n: int, writer, path: Path, dpi: float) -> None:
+    """Draw every frame once into ``writer`` (FuncAnimation.save draws each frame twice)."""
+    with writer.saving(fig, str(path), dpi):
+        for f in range(n):
+            update(f)
+            writer.grab_frame()
 
-    return HTML(anim.to_jshtml())
+
+def _inline(fig, update, n: int, fps: int, dpi: int) -> InlineAnimation:
+    """The frames as an HTML/JavaScript player (matplotlib's HTMLWriter, PNG frames embedded)."""
+    import tempfile
+
+    import matplotlib
+    from matplotlib.animation import HTMLWriter
+
+    with tempfile.TemporaryDirectory() as tmp, matplotlib.rc_context({"animation.embed_limit": 50.0}):
+        out = Path(tmp) / "animation.html"
+        _record(fig, update, n, HTMLWriter(fps=fps, embed_frames=True, default_mode="loop"), out, dpi)
+        return InlineAnimation(out.read_text(encoding="utf-8"), n)
+
+
+def animation_html(anim, *, fps: int | None = None, dpi: int = 60, frames: int = 0) -> InlineAnimation:
+    """An :class:`InlineAnimation` (JavaScript player, frames as PNG at ``dpi``) of a ``FuncAnimation``."""
+    import matplotlib
+
+    with matplotlib.rc_context({"savefig.dpi": dpi, "animation.frame_format": "png",
+                                "animation.embed_limit": 50.0}):
+        html = anim.to_jshtml(fps=fps, default_mode="loop")
+    return InlineAnimation(html, frames)

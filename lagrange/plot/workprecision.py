@@ -32,17 +32,16 @@ def plot_work_precision(problem: dict, path: str | Path | None = None, *, dpi: i
 
     Returns the matplotlib Figure.
     """
-    import matplotlib
+    from matplotlib import colormaps
 
-    if path is not None:
-        matplotlib.use("Agg", force=False)
-    import matplotlib.pyplot as plt
+    from .trajectory import new_figure
 
     curves = [c for c in problem["curves"] if c["points"]]
     panels = 3 if problem.get("energy") else 2
-    fig, axes = plt.subplots(1, panels, figsize=(6.2 * panels, 6.2), constrained_layout=True)
+    fig = new_figure(path, figsize=(6.2 * panels, 6.2), layout="constrained")  # file: no pyplot, backend untouched
+    axes = fig.subplots(1, panels)
     for ax in axes[:2]:
-        ax.set_prop_cycle(color=plt.cm.tab20.colors)
+        ax.set_prop_cycle(color=colormaps["tab20"].colors)
     for c in curves:
         err = [max(p["error"], 1e-17) for p in c["points"]]
         axes[0].loglog(err, [p["wall"] * 1e3 for p in c["points"]], label=c["label"], ms=4, **_style(c))
@@ -69,5 +68,4 @@ def plot_work_precision(problem: dict, path: str | Path | None = None, *, dpi: i
     fig.suptitle(f"{problem['name']}: {problem['title']}", fontsize="medium")
     if path is not None:
         fig.savefig(path, dpi=dpi)
-        plt.close(fig)
     return fig

@@ -224,24 +224,30 @@ class Trajectory:
 
     # --- export -------------------------------------------------------------------------------
     def to_csv(self, path: str | Path) -> Path:
-        """Write ``t``, the state columns, the inputs' values (when the system has inputs) and the diagnostics to
-        a CSV file."""
+        """Write ``t``, the state columns, the inputs' values (when the system has inputs), the diagnostics and,
+        with constraints, one ``lambda_<name>`` column per constraint (its multiplier, :meth:`multiplier`) to a
+        CSV file."""
         path = Path(path)
         d = self.diagnostics
         U = self.input_values
+        lam_names = [f"lambda_{name}" for name in self.model.equations.constraint_names]
+        lam = self.multipliers if lam_names else np.empty((len(self.t), 0))
         with path.open("w", newline="") as fh:
             w = csv.writer(fh)
             w.writerow(["t", *self.names, *(u.name for u in self.model.equations.inputs), "energy", "jacobi",
-                        "power_balance"])
+                        "power_balance", *lam_names])
             pb = self.power_balance()
             for i in range(len(self.t)):
                 w.writerow([repr(float(self.t[i])), *(repr(float(v)) for v in self.y[i]),
                             *(repr(float(v)) for v in U[i]),
-                            repr(float(d["energy"][i])), repr(float(d["jacobi"][i])), repr(float(pb[i]))])
+                            repr(float(d["energy"][i])), repr(float(d["jacobi"][i])), repr(float(pb[i])),
+                            *(repr(float(v)) for v in lam[i])])
         return path
 
     def plot(self, path: str | Path | None = None, **kwargs):
-        """Time series, phase portrait and energy error (see :func:`lagrange.plot.plot_trajectory`)."""
+        """One panel per coordinate against time, phase portraits, power balance and λ by constraint name;
+        ``coordinates=``, ``ax=``, ``title=`` (see :func:`lagrange.plot.plot_trajectory`). Writes a PNG when
+        ``path`` is given, never changing the matplotlib backend."""
         from ..plot import plot_trajectory
 
         return plot_trajectory(self, path, **kwargs)
@@ -251,3 +257,9 @@ class Trajectory:
             f"<Trajectory {len(self.t)} points, t=[{self.t[0]:.6g}, {self.t[-1]:.6g}], "
             f"method={self.method}, nfev={self.nfev}, success={self.success}>"
         )
+
+    def _repr_html_(self) -> str:
+        """A summary table for Jupyter (:func:`lagrange.display.trajectory_html`)."""
+        from ..display import trajectory_html
+
+        return trajectory_html(self)

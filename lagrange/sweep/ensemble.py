@@ -59,6 +59,11 @@ class EnsembleResult:
     def success(self) -> np.ndarray:
         return self.status == 0
 
+    def _repr_html_(self) -> str:
+        from ..display import ensemble_html
+
+        return ensemble_html(self)
+
 
 def _rms(x: np.ndarray) -> np.ndarray:
     return np.sqrt(np.einsum("ij,ij->i", x, x) / x.shape[1])
