@@ -5,7 +5,7 @@ the lagrange, numba, NumPy and Python versions (:func:`cache_key`), so numba's o
 exactly when the model is: a re-run with the same model skips the JIT, a changed model or an upgrade gets a
 new file. Entries are written atomically and checked on use; a corrupted numba cache is purged and rebuilt
 (``tests/test_cache.py``). Numba is optional
-(``pip install lagrange[fast]``); a clear :class:`~lagrange.errors.BackendError` says so when it is
+(``pip install "lagrange-dynamics[fast]"``); a clear :class:`~lagrange.errors.BackendError` says so when it is
 missing.
 """
 
@@ -40,7 +40,7 @@ def _require_numba(what: str):
     try:
         import numba
     except ImportError as exc:  # pragma: no cover - exercised when numba is absent
-        raise BackendError(f"{what} needs numba: install it with `pip install lagrange[fast]`") from exc
+        raise BackendError(f"{what} needs numba: install it with `pip install \"lagrange-dynamics[fast]\"`") from exc
     return numba
 
 

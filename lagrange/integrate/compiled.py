@@ -6,7 +6,7 @@
     The generic loops of :mod:`lagrange.integrate._rk_loops`, compiled once per machine and cached on
     disk, called with the model's ``field`` (:mod:`lagrange.codegen.rk_source`) as a numba first-class
     function: a new model only pays for JIT-compiling its own right-hand side. Implies ``backend="numba"``
-    (``pip install lagrange[fast]``). Supports ``DOP853`` and ``RK45`` for unconstrained systems without
+    (``pip install "lagrange-dynamics[fast]"``). Supports ``DOP853`` and ``RK45`` for unconstrained systems without
     events or dry-friction switches; anything else is a :class:`TypeError` naming the feature.
 ``"scipy"``
     ``solve_ivp`` (events, constraints, friction switches, every scipy method).
@@ -118,7 +118,7 @@ def loop_backend(loop: str, *, backend: str, model: NumericModel | None) -> str:
     if loop not in LOOPS:
         raise TypeError(f"loop must be one of {', '.join(map(repr, LOOPS))}, got {loop!r}")
     if loop == "compiled" and not _numba_available():
-        raise BackendError("loop='compiled' needs numba: install it with `pip install lagrange[fast]`")
+        raise BackendError("loop='compiled' needs numba: install it with `pip install \"lagrange-dynamics[fast]\"`")
     if model is not None:
         return model.backend
     return ("numba" if _numba_available() else "python") if backend == "auto" else backend

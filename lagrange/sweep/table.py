@@ -43,7 +43,7 @@ def require_pandas():
         import pandas
     except ImportError:
         raise SweepError('sweeps return a pandas DataFrame: install the sweep extra, '
-                         'pip install "lagrange[sweep]" (pandas, tqdm, cloudpickle)') from None
+                         'pip install "lagrange-dynamics[sweep]" (pandas, tqdm, cloudpickle)') from None
     return pandas
 
 
