@@ -144,11 +144,12 @@ def _is_greenspan(spec: str) -> bool:
 
 
 def _refuse(args, names: dict[str, str], why: str) -> None:
-    """SpecError for the first of ``names`` (attribute → flag) given on the command line."""
-    for attr, flag in names.items():
+    """SpecError for the first of ``names`` (attribute → "flag" or "flag: hint") given on the command line."""
+    for attr, text in names.items():
         value = getattr(args, attr, None)
         if value not in (None, False, []):
-            raise SpecError(f"{flag} does not apply to {why}")
+            flag, _, hint = text.partition(": ")
+            raise SpecError(f"{flag} does not apply to {why}" + (f" ({hint})" if hint else ""))
 
 
 def _cmd_simulate(args) -> int:
@@ -293,8 +294,8 @@ def _greenspan_molecular(args) -> int:
 
     why = "the molecular Greenspan model (a fixed-step discrete gradient, dt = --step, 12 Cartesian coordinates)"
     _refuse(args, {"rtol": "--rtol", "atol": "--atol", "backend": "--backend", "friction": "--friction",
-                   "initial": "--initial (it starts from the paper's state; --model rigid takes --initial)",
-                   "animate": "--animate (the molecular model has no System to draw; --model rigid animates)"},
+                   "initial": "--initial: it starts from the paper's state; --model rigid takes --initial",
+                   "animate": "--animate: the molecular model has no System to draw; --model rigid animates"},
             why)
     if args.method is not None and args.method.strip().lower() != "dg":
         raise SpecError(f"--method {args.method}: the molecular Greenspan model runs the discrete gradient (dg) "
@@ -304,10 +305,12 @@ def _greenspan_molecular(args) -> int:
     check_names(params, _MOLECULAR_PARAMS, "param", f"greenspan-{ex.number} (molecular)")
     dt = args.step if args.step is not None else 1e-5
     t_end = args.t_end if args.t_end is not None else 110.0
-    note(f"running {int(round(t_end / dt)):,} discrete-gradient steps (compiled; the first run compiles "
-         "the loop with numba, one time)")
+    steps = max(1, int(round(t_end / dt)))
+    note(f"running {steps:,} discrete-gradient steps (compiled; the first run compiles the loop with numba, "
+         "one time)")
     t0 = time.perf_counter()
-    model, res = run_molecular(ex, t_end, dt=dt, A=params.get("A", A_PAIR), g=params.get("g", G))
+    model, res = run_molecular(ex, t_end, dt=dt, A=params.get("A", A_PAIR), g=params.get("g", G),
+                               record_every=max(1, round(steps / 2200)))  # about 2200 states, as the paper's run
     wall = time.perf_counter() - t0
     E = model.energy(res.x, res.v)
     _greenspan_report(f"greenspan-{ex.number} (molecular model, discrete gradient, dt = {dt:g})", res.t, res.x,
@@ -347,14 +350,31 @@ def _parse_over(items) -> dict:
 def _cmd_sweep(args) -> int:
     import time
 
-    from .sweep import sweep
-
     if args.resume and not args.store:
         raise SpecError("--resume needs --store (the store holds the runs to skip)")
     over = _parse_over(args.over)
-    common = dict(random=args.random, seed=args.seed, workers=args.workers, store=args.store, resume=args.resume,
-                  progress=not args.no_progress)
-    t0 = time.perf_counter()
+    with _progress(args) as on:
+        common = dict(random=args.random, seed=args.seed, workers=args.workers, store=args.store,
+                      resume=args.resume, progress=on)
+        t0 = time.perf_counter()
+        table = _sweep_table(args, over, common)
+    wall = time.perf_counter() - t0
+    counts = table["status"].value_counts().to_dict()
+    print(table.drop(columns=["run_id"]).to_string(max_rows=40))
+    print(f"{len(table)} runs: " + ", ".join(f"{v} {k}" for k, v in sorted(counts.items())) +
+          f"; {wall:.1f} s ({len(table) / wall:.2f} runs/s)")
+    if args.out:
+        if args.out.lower().endswith(".parquet"):
+            table.to_parquet(args.out, index=False)
+        else:
+            table.to_csv(args.out, index=False)
+        print(f"table written to {args.out}")
+    return 0
+
+
+def _sweep_table(args, over: dict, common: dict):
+    from .sweep import sweep
+
     if _is_greenspan(args.spec):
         from .sweep.greenspan_map import stability_task
 
@@ -370,7 +390,7 @@ def _cmd_sweep(args) -> int:
             raise SpecError(f"--method {options['method']}: the Greenspan map stops each run when the top falls "
                             "(an event); use an adaptive method")
         task = stability_task(args.t_end or 110.0, **{"backend": "python", **options})
-        table = sweep(task, over, **common)
+        return sweep(task, over, **common)
     else:
         spec = _load(args.spec)
         if spec.system is None:
@@ -382,20 +402,8 @@ def _cmd_sweep(args) -> int:
         params, initial = _values(args, spec, label)
         options = merge_run_options(spec.options, _run_flags(args), label)
         backend = options.pop("backend", "python")
-        table = sweep(spec.system, over, t_end=float(t_end), initial=initial, params=params, backend=backend,
+        return sweep(spec.system, over, t_end=float(t_end), initial=initial, params=params, backend=backend,
                       **common, **options)
-    wall = time.perf_counter() - t0
-    counts = table["status"].value_counts().to_dict()
-    print(table.drop(columns=["run_id"]).to_string(max_rows=40))
-    print(f"{len(table)} runs: " + ", ".join(f"{v} {k}" for k, v in sorted(counts.items())) +
-          f"; {wall:.1f} s ({len(table) / wall:.2f} runs/s)")
-    if args.out:
-        if args.out.lower().endswith(".parquet"):
-            table.to_parquet(args.out, index=False)
-        else:
-            table.to_csv(args.out, index=False)
-        print(f"table written to {args.out}")
-    return 0
 
 
 def _cmd_bench(args) -> int:
@@ -608,6 +616,7 @@ def _parser() -> argparse.ArgumentParser:
     p.add_argument("--store", help="append each finished run to this .csv/.parquet store as it completes")
     p.add_argument("--resume", action="store_true", help="with --store: skip the runs already stored")
     _run_arguments(p)
+    p.add_argument("-q", "--quiet", action="store_true", help="no progress bar")
     p.set_defaults(func=_cmd_sweep)
 
     p = sub.add_parser("bench", parents=[quiet],

@@ -77,6 +77,9 @@ def write_module(prefix: str, text: str) -> tuple[str, Path]:
     except (OSError, UnicodeDecodeError):
         current = None
     if current != text:
+        from ..progress import note
+
+        note(f"compiling the generated {prefix} code with numba (one time for this model; cached in {path.parent})")
         atomic_write(path, text)
     return f"lagrange_{prefix}_{key}", path
 

@@ -144,13 +144,19 @@ def animate(system, trajectory, path: str | Path | None = None, *, links: str | 
 
     anim = FuncAnimation(fig, update, frames=len(idx), interval=1000 / fps, blit=False)
     if path is not None:
-        path = Path(path)
-        if path.suffix.lower() == ".gif":
-            from matplotlib.animation import PillowWriter
+        from ..progress import counter
 
-            anim.save(path, writer=PillowWriter(fps=fps))
-        else:
-            anim.save(path, writer="ffmpeg", fps=fps)
+        path = Path(path)
+        update, close = counter(len(idx), desc=f"frames of {path.name}")
+        try:
+            if path.suffix.lower() == ".gif":
+                from matplotlib.animation import PillowWriter
+
+                anim.save(path, writer=PillowWriter(fps=fps), progress_callback=lambda i, n: update(i + 1))
+            else:
+                anim.save(path, writer="ffmpeg", fps=fps, progress_callback=lambda i, n: update(i + 1))
+        finally:
+            close()
         plt.close(fig)
     return anim
 

@@ -53,7 +53,7 @@ def check_names(given: Mapping[str, float], valid: Iterable[str], flag: str, lab
     if unknown:
         kind = "parameter" if flag == "param" else "coordinate or velocity"
         plural = "s" if len(unknown) > 1 else ""
-        raise SpecError(f"--{flag} {', '.join(unknown)}: not a {kind}{plural} of {label} "
+        raise SpecError(f"--{flag} {', '.join(unknown)}: unknown {kind}{plural} of {label} "
                         f"(valid: {', '.join(valid) or 'none'})")
 
 
