@@ -139,6 +139,30 @@ def _load(spec: str):
     return load_spec(spec)
 
 
+_PLOT_SUFFIXES = (".png", ".pdf", ".svg", ".jpg", ".jpeg", ".eps", ".ps", ".tif", ".tiff", ".webp")
+_OUTPUTS = {"plot": _PLOT_SUFFIXES, "csv": None, "animate": (".gif", ".mp4"), "out": (".csv", ".parquet"),
+            "store": (".csv", ".parquet")}
+
+
+def _check_outputs(args) -> None:
+    """Refuse an output path whose folder does not exist or whose suffix cannot be written, before any work."""
+    from pathlib import Path
+
+    for attr, suffixes in _OUTPUTS.items():  # suffixes None: any name
+        value = getattr(args, attr, None)
+        if not isinstance(value, str) or (attr == "out" and args.command == "bench"):
+            continue
+        path = Path(value)
+        flag = f"--{attr}"
+        if suffixes is not None and path.suffix.lower() not in suffixes:
+            raise SpecError(f"{flag} {value}: write a {' or '.join(suffixes)} file")
+        folder = path.parent if str(path.parent) else Path(".")
+        if not folder.is_dir():
+            raise SpecError(f"{flag} {value}: the folder {folder} does not exist")
+        if not os.access(folder, os.W_OK):
+            raise SpecError(f"{flag} {value}: the folder {folder} is not writable")
+
+
 def _is_greenspan(spec: str) -> bool:
     return spec.strip().lower().startswith("greenspan")
 
@@ -190,7 +214,8 @@ def _simulate(args) -> int:
     print(f"method {sol.method}, {sol.nfev} right-hand-side evaluations, {len(sol.t)} output points")
     tol = (f"step {options['step']:g}" if options["method"] in FIXED_STEP
            else f"rtol {options.get('rtol', 1e-9):g}, atol {options.get('atol', 1e-11):g}")
-    print(f"settings: {tol}, backend {options.get('backend', 'python')}")
+    friction = f", friction {options['friction']}" if "friction" in options else ""
+    print(f"settings: {tol}, backend {options.get('backend', 'python')}{friction}")
     final = ", ".join(f"{n}={v:.10g}" for n, v in zip(sol.names, sol.y[-1]))
     print(f"state at t={sol.t[-1]:.6g}: {final}")
     label_e = "energy drift" if sol.work is None else "power-balance residual"
@@ -660,6 +685,7 @@ def main(argv: list[str] | None = None) -> int:
     3 internal error, 141 the output pipe was closed)."""
     try:
         args = _parser().parse_args(argv)
+        _check_outputs(args)
         status = int(args.func(args) or 0)
         sys.stdout.flush()
         return status
@@ -667,6 +693,9 @@ def main(argv: list[str] | None = None) -> int:
         _silence_stdout()
         return 141
     except LagrangeError as exc:
+        print(f"lagrange: error: {exc}", file=sys.stderr)
+        return 2
+    except OSError as exc:  # a file that cannot be read or written (checked up front where possible)
         print(f"lagrange: error: {exc}", file=sys.stderr)
         return 2
     except KeyboardInterrupt:  # pragma: no cover
