@@ -344,6 +344,7 @@ def test_sweep_every_option(tmp_path, capsys):
     assert "2 runs" in out
 
 
+@pytest.mark.slow  # compiles the discrete-gradient loop with numba (tens of seconds when not cached)
 def test_greenspan_molecular_every_option(tmp_path, capsys):
     table, png = tmp_path / "m.csv", tmp_path / "m.png"
     status, out, err = cli("simulate", "greenspan-2", "--model", "molecular", "--t-end", "0.01", "--step", "2e-5",
