@@ -134,9 +134,11 @@ def _load(spec: str):
         error = unknown_id_error(spec)
         if error is not None:
             raise error
+    from .progress import heartbeat
     from .spec.loader import load_spec
 
-    return load_spec(spec)
+    with heartbeat(f"loading {spec}"):
+        return load_spec(spec)
 
 
 _PLOT_SUFFIXES = (".png", ".pdf", ".svg", ".jpg", ".jpeg", ".eps", ".ps", ".tif", ".tiff", ".webp")
@@ -179,14 +181,13 @@ def _refuse(args, names: dict[str, str], why: str) -> None:
 def _cmd_simulate(args) -> int:
     if args.model is not None and not args.spec.lower().startswith("greenspan-"):
         raise SpecError("--model applies to greenspan-N only")
-    with _progress(args):
-        if args.model == "molecular":
-            return _greenspan_molecular(args)
-        return _simulate(args)
+    if args.model == "molecular":
+        return _greenspan_molecular(args)
+    return _simulate(args)
 
 
 def _simulate(args) -> int:
-    from .progress import note
+    from .progress import heartbeat
     spec = _load(args.spec)
     if spec.system is None:
         raise SpecError(f"{args.spec}: this problem has no equations of motion to simulate")
@@ -208,8 +209,8 @@ def _simulate(args) -> int:
             print(f"{spec.problem.id}: {spec.problem.title} ({spec.problem.source})")
         print(format_equations(spec.system))
         print()
-    note(f"integrating {label} to t = {float(t_end):g} with {options['method']}")
-    sol = spec.system.simulate(float(t_end), initial, params, **options)
+    with heartbeat(f"integrating {label} to t = {float(t_end):g} with {options['method']}"):
+        sol = spec.system.simulate(float(t_end), initial, params, **options)
     print(f"{spec.label}: {spec.system!r}")
     print(f"method {sol.method}, {sol.nfev} right-hand-side evaluations, {len(sol.t)} output points")
     tol = (f"step {options['step']:g}" if options["method"] in FIXED_STEP
@@ -274,15 +275,15 @@ def _greenspan_report(label, t, vertices, fell, fall_time, extra: str, plot: str
 
 def _greenspan_rigid(args, spec, t_end: float, params: dict, initial: dict, options: dict) -> int:
     from .discrete.greenspan import run_rigid
-    from .progress import note
+    from .progress import heartbeat, note
 
     if options["method"] in FIXED_STEP:
         raise SpecError(f"--method {options['method']}: the rigid Greenspan run stops when the top falls (an "
                         f"event), which the fixed-step methods do not support; use an adaptive method "
                         f"({', '.join(ADAPTIVE)})")
     options = {"rtol": 1e-10, "atol": 1e-12, **options}
-    note(f"integrating {spec.label} (rigid model) to t = {t_end:g} with {options['method']}")
-    _, sol, verts = run_rigid(spec.problem, t_end, params=params, initial=initial, **options)
+    with heartbeat(f"integrating {spec.label} (rigid model) to t = {t_end:g} with {options['method']}"):
+        _, sol, verts = run_rigid(spec.problem, t_end, params=params, initial=initial, **options)
     fall = [float(e[0]) for e in sol.t_events if len(e)]
     _greenspan_report(f"{spec.label} (rigid model, 5 DOF, {sol.method}, rtol {options['rtol']:g}, atol "
                       f"{options['atol']:g})", sol.t, verts, bool(fall), min(fall) if fall else None,
@@ -315,7 +316,7 @@ def _greenspan_molecular(args) -> int:
     import numpy as np
 
     from .discrete.greenspan import A_PAIR, G, run_molecular
-    from .progress import note
+    from .progress import heartbeat
 
     why = "the molecular Greenspan model (a fixed-step discrete gradient, dt = --step, 12 Cartesian coordinates)"
     _refuse(args, {"rtol": "--rtol", "atol": "--atol", "backend": "--backend", "friction": "--friction",
@@ -331,11 +332,11 @@ def _greenspan_molecular(args) -> int:
     dt = args.step if args.step is not None else 1e-5
     t_end = args.t_end if args.t_end is not None else 110.0
     steps = max(1, int(round(t_end / dt)))
-    note(f"running {steps:,} discrete-gradient steps (compiled; the first run compiles the loop with numba, "
-         "one time)")
     t0 = time.perf_counter()
-    model, res = run_molecular(ex, t_end, dt=dt, A=params.get("A", A_PAIR), g=params.get("g", G),
-                               record_every=max(1, round(steps / 2200)))  # about 2200 states, as the paper's run
+    with heartbeat(f"running {steps:,} discrete-gradient steps (the first run compiles the loop with numba, "
+                   "one time)"):
+        model, res = run_molecular(ex, t_end, dt=dt, A=params.get("A", A_PAIR), g=params.get("g", G),
+                                   record_every=max(1, round(steps / 2200)))  # ~2200 states, as the paper's run
     wall = time.perf_counter() - t0
     E = model.energy(res.x, res.v)
     _greenspan_report(f"greenspan-{ex.number} (molecular model, discrete gradient, dt = {dt:g})", res.t, res.x,
@@ -378,11 +379,12 @@ def _cmd_sweep(args) -> int:
     if args.resume and not args.store:
         raise SpecError("--resume needs --store (the store holds the runs to skip)")
     over = _parse_over(args.over)
-    with _progress(args) as on:
-        common = dict(random=args.random, seed=args.seed, workers=args.workers, store=args.store,
-                      resume=args.resume, progress=on)
-        t0 = time.perf_counter()
-        table = _sweep_table(args, over, common)
+    from .progress import active
+
+    common = dict(random=args.random, seed=args.seed, workers=args.workers, store=args.store, resume=args.resume,
+                  progress=active())
+    t0 = time.perf_counter()
+    table = _sweep_table(args, over, common)
     wall = time.perf_counter() - t0
     counts = table["status"].value_counts().to_dict()
     print(table.drop(columns=["run_id"]).to_string(max_rows=40))
@@ -439,8 +441,7 @@ def _cmd_bench(args) -> int:
     if unknown:
         raise SpecError(f"--problem {', '.join(unknown)}: unknown benchmark problem (choose from "
                         f"{', '.join(PROBLEMS)})")
-    with _progress(args):
-        run_suite(args.problem, quick=args.quick, out=args.out, heyoka=not args.no_heyoka)
+    run_suite(args.problem, quick=args.quick, out=args.out, heyoka=not args.no_heyoka)
     return 0
 
 
@@ -459,29 +460,28 @@ def _cmd_verify(args) -> int:
     from .corpus.registry import all_problems, get_problem
     from .progress import track
 
-    with _progress(args):
-        if args.ids:
-            probs = [get_problem(i) for i in args.ids]
-            if args.chapter is not None:
-                probs = [p for p in probs if p.chapter == args.chapter]
-        else:
-            from .corpus import index
+    if args.ids:
+        probs = [get_problem(i) for i in args.ids]
+        if args.chapter is not None:
+            probs = [p for p in probs if p.chapter == args.chapter]
+    else:
+        from .corpus import index
 
-            if args.chapter is not None and not index.entries(args.chapter):
-                raise SpecError(f"no problems in chapter {args.chapter}")
-            if index.stale_modules():  # the index misses a changed module: load the whole corpus
-                probs = [p for p in all_problems() if args.chapter is None or p.chapter == args.chapter]
-            else:
-                ids = [e["id"] for e in index.entries(args.chapter)]
-                probs = [get_problem(i) for i in track(ids, desc="loading problems")]
-        failed = 0
-        for p in track(probs, desc="verifying"):
-            for r in p.check():
-                if not r.ok:
-                    failed += 1
-                    print(f"FAIL {p.id}: {r.answer}: {r.detail}")
-                elif args.verbose:
-                    print(f"ok   {p.id}: {r.answer}")
+        if args.chapter is not None and not index.entries(args.chapter):
+            raise SpecError(f"no problems in chapter {args.chapter}")
+        if index.stale_modules():  # the index misses a changed module: load the whole corpus
+            probs = [p for p in all_problems() if args.chapter is None or p.chapter == args.chapter]
+        else:
+            ids = [e["id"] for e in index.entries(args.chapter)]
+            probs = [get_problem(i) for i in track(ids, desc="loading problems")]
+    failed = 0
+    for p in track(probs, desc="verifying"):
+        for r in p.check():
+            if not r.ok:
+                failed += 1
+                print(f"FAIL {p.id}: {r.answer}: {r.detail}")
+            elif args.verbose:
+                print(f"ok   {p.id}: {r.answer}")
     checks = sum(len(p.answers) for p in probs)
     print(f"{len(probs)} problems, {checks} answers checked, {failed} failed")
     return 1 if failed else 0
@@ -600,7 +600,7 @@ def _parser() -> argparse.ArgumentParser:
     p.set_defaults(func=_cmd_problems)
 
     spec_help = "a problem id (see `lagrange problems`), a Python file defining `system`, or a TOML spec"
-    p = sub.add_parser("derive", help="print Lagrange's equations of a system")
+    p = sub.add_parser("derive", parents=[quiet], help="print Lagrange's equations of a system")
     p.add_argument("spec", help=spec_help)
     p.add_argument("--latex", action="store_true", help="print LaTeX instead of text")
     p.set_defaults(func=_cmd_derive)
@@ -624,7 +624,7 @@ def _parser() -> argparse.ArgumentParser:
     p.add_argument("--param", action="append", metavar="NAME=VALUE", help="parameter values for numbers")
     p.set_defaults(func=_cmd_modes)
 
-    p = sub.add_parser("hamiltonian", help="print H and Hamilton's canonical equations")
+    p = sub.add_parser("hamiltonian", parents=[quiet], help="print H and Hamilton's canonical equations")
     p.add_argument("spec", help=spec_help)
     p.set_defaults(func=_cmd_hamiltonian)
 
@@ -654,7 +654,8 @@ def _parser() -> argparse.ArgumentParser:
     p.add_argument("-q", "--quiet", action="store_true", help="no progress reports")
     p.set_defaults(func=_cmd_bench)
 
-    p = sub.add_parser("check", help="compare Lagrange's accelerations with Gauss' principle at random states")
+    p = sub.add_parser("check", parents=[quiet],
+                       help="compare Lagrange's accelerations with Gauss' principle at random states")
     p.add_argument("spec", help=spec_help)
     p.add_argument("--samples", type=_count(1), default=5, help="number of random states (default 5)")
     p.add_argument("--seed", type=int, default=0, help="seed of the random states (default 0)")
@@ -686,7 +687,8 @@ def main(argv: list[str] | None = None) -> int:
     try:
         args = _parser().parse_args(argv)
         _check_outputs(args)
-        status = int(args.func(args) or 0)
+        with _progress(args):
+            status = int(args.func(args) or 0)
         sys.stdout.flush()
         return status
     except BrokenPipeError:  # `lagrange simulate ex3.4 | head -2`: the reader is gone, stop quietly

@@ -12,12 +12,13 @@ from __future__ import annotations
 
 import os
 import sys
+import threading
 import time
 from collections.abc import Callable, Iterable, Iterator
 from contextlib import contextmanager
 from contextvars import ContextVar
 
-__all__ = ["reporting", "active", "note", "track", "counter"]
+__all__ = ["reporting", "active", "note", "track", "counter", "heartbeat"]
 
 _ACTIVE: ContextVar[bool] = ContextVar("lagrange_progress", default=False)
 #: plain-text reports (no tqdm) print at most one line per this many seconds
@@ -111,3 +112,32 @@ def counter(total: int, *, desc: str = "") -> tuple[Callable[[int], None], Calla
             state["last"] = now
 
     return update_plain, (lambda: None)
+
+
+@contextmanager
+def heartbeat(what: str, *, every: float = 2.0) -> Iterator[None]:
+    """For work that cannot report its own progress (an integration, a compiled loop): when reports are
+    on, a note ``what …`` at the start and, from a background thread, the elapsed time every ``every``
+    seconds until the block ends (on one line on a terminal)."""
+    if not _ACTIVE.get():
+        yield
+        return
+    print(f"lagrange: {what} …", file=sys.stderr, flush=True)
+    done = threading.Event()
+    start = time.monotonic()
+    tty = sys.stderr.isatty()
+
+    def beat() -> None:
+        while not done.wait(every):
+            text = f"lagrange: {what} … {time.monotonic() - start:.0f} s"
+            print("\r" + text if tty else text, end="" if tty else "\n", file=sys.stderr, flush=True)
+
+    thread = threading.Thread(target=beat, daemon=True)
+    thread.start()
+    try:
+        yield
+    finally:
+        done.set()
+        thread.join()
+        if tty and time.monotonic() - start >= every:
+            print(file=sys.stderr, flush=True)

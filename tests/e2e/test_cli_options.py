@@ -232,6 +232,8 @@ def test_quiet_and_progress(tmp_path, capsys, monkeypatch):
     assert status == 0 and err == ""
     status, out, err = cli("verify", "ex1.1", capsys=capsys)
     assert status == 0 and "verifying" in err
+    status, out, err = cli("derive", path, capsys=capsys)
+    assert status == 0 and f"lagrange: loading {path}" in err
     status, out, err = cli("verify", "ex1.1", "-q", capsys=capsys)
     assert status == 0 and err == ""
 
@@ -310,13 +312,14 @@ def test_derive_hamiltonian_modes_check_verify(tmp_path, capsys):
     path = spec(tmp_path, OSC)
     status, out, _ = cli("derive", path, capsys=capsys)
     assert status == 0 and "k" in out
-    status, out, _ = cli("derive", path, "--latex", capsys=capsys)
+    status, out, _ = cli("derive", path, "--latex", "--no-progress", capsys=capsys)
     assert status == 0 and ("\\frac" in out or "\\ddot" in out)
-    status, out, _ = cli("hamiltonian", path, capsys=capsys)
+    status, out, _ = cli("hamiltonian", path, "--no-progress", capsys=capsys)
     assert status == 0 and "H =" in out
     status, out, _ = cli("modes", path, "--about", "x=0", "--param", "m=1", "--param", "k=4", capsys=capsys)
     assert status == 0 and "2." in out.split("angular frequencies:")[1].splitlines()[0]  # omega = sqrt(k/m)
-    status, out, _ = cli("check", "ex3.2", "--samples", "2", "--seed", "3", "--param", "m=2", capsys=capsys)
+    status, out, _ = cli("check", "ex3.2", "--samples", "2", "--seed", "3", "--param", "m=2", "--no-progress",
+                         capsys=capsys)
     assert status == 0, out
     status, out, _ = cli("verify", "ex1.1", "--chapter", "1", "-v", "--no-progress", capsys=capsys)
     assert status == 0 and "ok   ex1.1" in out and "0 failed" in out
