@@ -21,7 +21,11 @@ _BY_LOWER = {m.lower(): m for m in ALL_METHODS}
 
 def canonical_method(name: str) -> str | None:
     """The method's name as :func:`simulate` spells it (case-insensitive: ``dop853`` → ``DOP853``,
-    ``Taylor`` → ``taylor``), or None for an unknown name."""
+    ``Taylor`` → ``taylor``), or None for an unknown name.
+
+    >>> canonical_method("dop853"), canonical_method("GL4"), canonical_method("rk4")
+    ('DOP853', 'gl4', None)
+    """
     if not isinstance(name, str):
         return None
     return _BY_LOWER.get(name.strip().lower())

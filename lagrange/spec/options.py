@@ -85,6 +85,13 @@ def merge_run_options(spec_options: Mapping, flags: Mapping, label: str) -> dict
         ``--method`` switches between kinds, the spec's options of the other kind (its ``rtol`` for an
         adaptive method, its ``step`` for a fixed-step one) no longer apply and are dropped; the same
         contradiction within the spec alone, or within the flags alone, is refused.
+
+    Examples
+    --------
+    >>> merge_run_options({"method": "LSODA", "rtol": 1e-4}, {"method": None, "rtol": None}, "s.toml")
+    {'method': 'LSODA', 'rtol': 0.0001}
+    >>> merge_run_options({"method": "LSODA", "rtol": 1e-4}, {"method": "gl4", "step": 0.01}, "s.toml")
+    {'method': 'gl4', 'step': 0.01}
     """
     options = dict(spec_options)
     options.update({k: v for k, v in flags.items() if v is not None})
