@@ -61,6 +61,27 @@ def _where(key: str, flags: Mapping, label: str) -> str:
     return f"--{key.replace('_', '-')}" if flags.get(key) is not None else f"{label}: [simulate] {key}"
 
 
+def _check_keys_and_choices(options: dict, flags: Mapping, label: str) -> None:
+    """Every key a keyword of simulate(); the options with a fixed set of values take one of them."""
+    import inspect
+
+    from ..codegen.numeric import BACKENDS
+    from ..integrate.compiled import LOOPS
+    from ..integrate.constrained import STABILIZATIONS
+    from ..integrate.run import simulate
+
+    allowed = [name for name, par in inspect.signature(simulate).parameters.items()
+               if par.kind is inspect.Parameter.KEYWORD_ONLY]
+    unknown = sorted(set(options) - set(allowed))
+    if unknown:
+        raise SpecError(f"{label}: unknown simulate option(s) {', '.join(unknown)} (allowed: {', '.join(allowed)})")
+    choices = {"backend": BACKENDS, "friction": ("events", "regularize"), "stabilization": STABILIZATIONS,
+               "loop": LOOPS}
+    for key, values in choices.items():
+        if key in options and options[key] not in values:
+            raise SpecError(f"{_where(key, flags, label)}: {options[key]!r} is not one of {', '.join(values)}")
+
+
 def merge_run_options(spec_options: Mapping, flags: Mapping, label: str) -> dict:
     """The options of the run: ``spec_options`` overridden by every flag that is not None, validated.
 
@@ -95,6 +116,7 @@ def merge_run_options(spec_options: Mapping, flags: Mapping, label: str) -> dict
     """
     options = dict(spec_options)
     options.update({k: v for k, v in flags.items() if v is not None})
+    _check_keys_and_choices(options, flags, label)
     raw = options.get("method", "DOP853")
     method = canonical_method(raw)
     if method is None:

@@ -54,6 +54,14 @@ x_dot = 0.0
 t_end = 4.0
 """
 
+PY_OSC = """\
+import lagrange as lg
+x = lg.coordinates("x")
+system = lg.System([x], T=x.diff(lg.t) ** 2 / 2, V=x**2 / 2)
+initial = {"x": 1.0, "x_dot": 0.0}
+t_end = 1.0
+"""
+
 HEAVY = ("sympy", "numpy", "scipy", "numba", "matplotlib", "pandas")
 
 
@@ -260,6 +268,8 @@ BAD = [
     (["simulate", "{osc}", "--animate", "{tmp}/a.avi"], ".gif or .mp4"),
     (["simulate", "{osc_bad_method}"], "[simulate] method: unknown method 'leapfrog'"),
     (["simulate", "{osc_bad_rtol}"], "[simulate] rtol: must be a positive number"),
+    (["simulate", "{py_bad_option}"], "unknown simulate option(s) foo"),
+    (["simulate", "{osc_bad_friction}"], "[simulate] friction: 'sticky' is not one of events, regularize"),
     (["simulate", "ex3.44"], "did you mean"),
     (["simulate", "ex7.1"], "no equations of motion"),
     (["simulate", "greenspan-99"], "greenspan-1 … greenspan-14"),
@@ -298,7 +308,9 @@ BAD = [
 def test_bad_input_is_one_clear_line(tmp_path, capsys, argv, message):
     files = {"osc": spec(tmp_path, OSC), "tmp": str(tmp_path),
              "osc_bad_method": spec(tmp_path, OSC, "m.toml", 'method = "leapfrog"\n'),
-             "osc_bad_rtol": spec(tmp_path, OSC, "r.toml", 'rtol = "tight"\n')}
+             "osc_bad_rtol": spec(tmp_path, OSC, "r.toml", 'rtol = "tight"\n'),
+             "osc_bad_friction": spec(tmp_path, OSC, "f.toml", 'friction = "sticky"\n'),
+             "py_bad_option": spec(tmp_path, PY_OSC, "o.py", 'options = {"foo": 1}\n')}
     status, out, err = cli(*(a.format(**files) for a in argv), capsys=capsys)
     assert status == 2, (out, err)
     assert message in err, err
