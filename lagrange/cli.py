@@ -152,9 +152,13 @@ def _check_outputs(args) -> None:
 
     for attr, suffixes in _OUTPUTS.items():  # suffixes None: any name
         value = getattr(args, attr, None)
-        if not isinstance(value, str) or (attr == "out" and args.command == "bench"):
+        if not isinstance(value, str):
             continue
         path = Path(value)
+        if attr == "out" and args.command == "bench":  # a folder, created when missing
+            if path.exists() and not path.is_dir():
+                raise SpecError(f"--out {value}: exists and is not a folder (bench writes several files into it)")
+            continue
         flag = f"--{attr}"
         if suffixes is not None and path.suffix.lower() not in suffixes:
             raise SpecError(f"{flag} {value}: write a {' or '.join(suffixes)} file")
@@ -331,6 +335,8 @@ def _greenspan_molecular(args) -> int:
     check_names(params, _MOLECULAR_PARAMS, "param", f"greenspan-{ex.number} (molecular)")
     dt = args.step if args.step is not None else 1e-5
     t_end = args.t_end if args.t_end is not None else 110.0
+    if dt > t_end:
+        raise SpecError(f"--step {dt:g} is longer than the run (--t-end {t_end:g})")
     steps = max(1, int(round(t_end / dt)))
     t0 = time.perf_counter()
     with heartbeat(f"running {steps:,} discrete-gradient steps (the first run compiles the loop with numba, "

@@ -301,6 +301,8 @@ BAD = [
     (["sweep", "greenspan", "--over", "zz=1:2:2"], "--over V="),
     (["sweep", "greenspan-3", "--over", "V=1:2:2"], "lagrange sweep greenspan"),
     (["bench", "--problem", "nosuch"], "unknown benchmark problem"),
+    (["bench", "--out", "{osc}"], "is not a folder"),
+    (["simulate", "greenspan-1", "--model", "molecular", "--step", "1e-3", "--t-end", "1e-4"], "longer than the run"),
 ]
 
 
