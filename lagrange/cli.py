@@ -192,6 +192,7 @@ def _cmd_simulate(args) -> int:
 
 def _simulate(args) -> int:
     from .progress import heartbeat
+
     spec = _load(args.spec)
     if spec.system is None:
         raise SpecError(f"{args.spec}: this problem has no equations of motion to simulate")
