@@ -1,48 +1,117 @@
 """lagrange — derive Lagrange's equations symbolically (the way D. A. Wells does) and solve them fast.
 
 Public API (explicit re-exports only). Conventions: :mod:`lagrange.conventions`.
+
+The names are imported lazily (PEP 562): ``import lagrange`` loads no sympy, scipy, numba or matplotlib
+until a name is used, so the ``lagrange`` command answers ``--help`` and ``problems`` at once.
+``from lagrange import System`` and ``lagrange.System`` work as usual. To export a new name, add one
+line ``"name": ".submodule"`` to :data:`_EXPORTS` and the name to ``__all__``.
 """
 
-from .analysis.driving import actuator_forces, driving_forces, static_equilibrium
-from .analysis.hamilton import hamiltonian
-from .analysis.small_oscillations import characteristic_roots, equilibria, linearize, normal_modes
-from .analysis.steady_motion import oscillations_about_steady_motion, routhian, steady_motion_conditions
-from .analysis.variational import action, euler_lagrange, variational_integrate
-from .conventions import t
-from .derive.euler import support_loads
-from .errors import (
-    AnalysisError,
-    BackendError,
-    CollisionError,
-    DeclarationError,
-    InconsistentConstraintError,
-    InitialConditionError,
-    InputError,
-    IntegrationError,
-    LagrangeError,
-    LagrangeWarning,
-    ParameterError,
-    SingularMassMatrixError,
-    SpecError,
-    SymbolicTimeoutError,
-    UnusedParameterWarning,
-)
-from .gauss.check import GaussCheck, check_gauss
-from .interop.mechanics import from_mechanics
-from .model.bodies import Force, Particle
-from .model.constraints import Differential, Holonomic, IntegrableConstraintWarning, Nonholonomic, Rough
-from .model.coordinates import coordinates, delta, parameters, to_functions, to_symbols, unknowns
-from .model.eliminate import eliminate
-from .model.frames import EarthFrame, Frame
-from .model.inertia import Inertia
-from .model.inputs import inputs
-from .model.rigid_body import RigidBody, Torque
-from .model.rotations import EulerAngles, Quaternion, rot_x, rot_y, rot_z
-from .model.system import System
-from .printing import latex, pretty
-from .sweep import sweep
+from __future__ import annotations
+
+import importlib
+import sys
+import types
 
 __version__ = "0.1.0"
+
+#: public name -> the submodule (relative to this package) that defines it; imported on first use.
+#: One line per name, grouped by submodule, in the order of the old ``from .x import y`` lines.
+_EXPORTS: dict[str, str] = {
+    "actuator_forces": ".analysis.driving",
+    "driving_forces": ".analysis.driving",
+    "static_equilibrium": ".analysis.driving",
+    "hamiltonian": ".analysis.hamilton",
+    "characteristic_roots": ".analysis.small_oscillations",
+    "equilibria": ".analysis.small_oscillations",
+    "linearize": ".analysis.small_oscillations",
+    "normal_modes": ".analysis.small_oscillations",
+    "oscillations_about_steady_motion": ".analysis.steady_motion",
+    "routhian": ".analysis.steady_motion",
+    "steady_motion_conditions": ".analysis.steady_motion",
+    "action": ".analysis.variational",
+    "euler_lagrange": ".analysis.variational",
+    "variational_integrate": ".analysis.variational",
+    "t": ".conventions",
+    "BackendError": ".errors",
+    "CollisionError": ".errors",
+    "DeclarationError": ".errors",
+    "InconsistentConstraintError": ".errors",
+    "InitialConditionError": ".errors",
+    "IntegrationError": ".errors",
+    "LagrangeError": ".errors",
+    "ParameterError": ".errors",
+    "SingularMassMatrixError": ".errors",
+    "SpecError": ".errors",
+    "SymbolicTimeoutError": ".errors",
+    "GaussCheck": ".gauss.check",
+    "check_gauss": ".gauss.check",
+    "Force": ".model.bodies",
+    "Particle": ".model.bodies",
+    "Differential": ".model.constraints",
+    "Holonomic": ".model.constraints",
+    "IntegrableConstraintWarning": ".model.constraints",
+    "Nonholonomic": ".model.constraints",
+    "Rough": ".model.constraints",
+    "coordinates": ".model.coordinates",
+    "delta": ".model.coordinates",
+    "parameters": ".model.coordinates",
+    "eliminate": ".model.eliminate",
+    "Inertia": ".model.inertia",
+    "RigidBody": ".model.rigid_body",
+    "Torque": ".model.rigid_body",
+    "EulerAngles": ".model.rotations",
+    "Quaternion": ".model.rotations",
+    "rot_x": ".model.rotations",
+    "rot_y": ".model.rotations",
+    "rot_z": ".model.rotations",
+    "System": ".model.system",
+    "latex": ".printing",
+    "pretty": ".printing",
+    "sweep": ".sweep",
+    "support_loads": ".derive.euler",
+    "AnalysisError": ".errors",
+    "InputError": ".errors",
+    "LagrangeWarning": ".errors",
+    "UnusedParameterWarning": ".errors",
+    "from_mechanics": ".interop.mechanics",
+    "to_functions": ".model.coordinates",
+    "to_symbols": ".model.coordinates",
+    "unknowns": ".model.coordinates",
+    "EarthFrame": ".model.frames",
+    "Frame": ".model.frames",
+    "inputs": ".model.inputs",
+}
+
+
+def __getattr__(name: str):
+    """Import the submodule defining ``name`` on first use and cache the value (PEP 562)."""
+    try:
+        module = _EXPORTS[name]
+    except KeyError:
+        raise AttributeError(f"module 'lagrange' has no attribute {name!r}") from None
+    value = getattr(importlib.import_module(module, __name__), name)
+    globals()[name] = value
+    return value
+
+
+def __dir__() -> list[str]:
+    return sorted(set(globals()) | set(__all__))
+
+
+class _Package(types.ModuleType):
+    """Keeps an exported name that is also a subpackage (``sweep``) bound to the exported function:
+    importing ``lagrange.sweep.table`` first would otherwise rebind ``lagrange.sweep`` to the module."""
+
+    def __setattr__(self, name: str, value) -> None:
+        if (isinstance(value, types.ModuleType) and name in _EXPORTS
+                and value.__name__ == f"{__name__}.{name}" and _EXPORTS[name] == f".{name}"):
+            return
+        super().__setattr__(name, value)
+
+
+sys.modules[__name__].__class__ = _Package
 
 __all__ = [
     "t",

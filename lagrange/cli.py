@@ -1,34 +1,44 @@
 """The ``lagrange`` command line: parses arguments and calls the library (no logic of its own).
 
 Errors are one line on stderr and a non-zero exit (2 for bad input, 3 for an internal failure);
-set ``LAGRANGE_DEBUG=1`` to see tracebacks.
+set ``LAGRANGE_DEBUG=1`` to see tracebacks. A closed pipe (``lagrange simulate ex3.4 | head -2``) ends the
+command quietly. Nothing heavy is imported before the arguments are parsed (``lagrange --help`` and
+``lagrange problems`` load no sympy, numpy or scipy: the problem list comes from the corpus index,
+:mod:`lagrange.corpus.index`). Progress of long work goes to stderr (:mod:`lagrange.progress`) when it is
+a terminal, unless ``--no-progress`` or ``-q``.
+
+Every option is honoured or refused for every kind of spec (TOML file, Python file, corpus problem,
+``greenspan-N``): the spec's values are defaults and the flags given override them
+(:mod:`lagrange.spec.options`).
 """
 
 from __future__ import annotations
 
 import argparse
+import math
 import os
 import sys
 
-import numpy as np
-
 from . import __version__
 from .errors import LagrangeError, SpecError
+from .integrate.methods import ADAPTIVE, FIXED_STEP, SCIPY
+from .spec.options import check_names, merge_run_options, parse_assignments
 
 __all__ = ["main"]
 
+#: code-generation backends (:data:`lagrange.codegen.numeric.BACKENDS`, checked by the CLI test)
+BACKENDS = ("python", "numba", "reference", "auto")
+_MOLECULAR_PARAMS = ("A", "g")
+
 
 def _kv(items, what) -> dict:
-    out = {}
-    for item in items or []:
-        if "=" not in item:
-            raise SpecError(f"--{what} expects name=value, got {item!r}")
-        k, v = item.split("=", 1)
-        try:
-            out[k.strip()] = float(v)
-        except ValueError:
-            raise SpecError(f"--{what} {k}: {v!r} is not a number") from None
-    return out
+    return parse_assignments(items, what)
+
+
+def _progress(args):
+    from .progress import reporting
+
+    return reporting(not (getattr(args, "no_progress", False) or getattr(args, "quiet", False)))
 
 
 def _input_values(spec, args, params: dict) -> dict:
@@ -56,26 +66,25 @@ def _input_parameters(spec) -> set:
 
 
 def _cmd_problems(args) -> int:
-    from .corpus.registry import all_problems
+    from .corpus import index
 
-    probs = [p for p in all_problems() if args.chapter is None or p.chapter == args.chapter]
+    probs = index.entries(args.chapter)
     if not probs:
-        print(f"no problems in chapter {args.chapter}")
-        return 0
+        chapters = sorted({e["chapter"] for e in index.entries()})
+        raise SpecError(f"no problems in chapter {args.chapter} (chapters {chapters[0]}–{chapters[-1]})")
     chapter = None
     for p in probs:
-        if p.chapter != chapter:
-            chapter = p.chapter
+        if p["chapter"] != chapter:
+            chapter = p["chapter"]
             print(f"\nChapter {chapter}")
-        dyn = "" if p.simulation is not None else "  [no dynamics]"
-        print(f"  {p.id:<22} {p.title}{dyn}")
+        dyn = "" if p["dynamics"] else "  [no dynamics]"
+        print(f"  {p['id']:<22} {p['title']}{dyn}")
     if args.chapter is None:
-        from .discrete.greenspan import EXAMPLES
-
         print("\nGreenspan's tetrahedral top (simulate with --model rigid|molecular)")
-        for ex in EXAMPLES.values():
-            extra = "" if ex.masses == (1.0, 1.0, 1.0, 1.0) else f", masses {ex.masses}"
-            print(f"  greenspan-{ex.number:<12} V = {ex.V:g}, alpha = {ex.alpha_deg:g} deg{extra}")
+        for ex in index.greenspan_examples():
+            masses = tuple(ex["masses"])
+            extra = "" if masses == (1.0, 1.0, 1.0, 1.0) else f", masses {masses}"
+            print(f"  greenspan-{ex['number']:<12} V = {ex['V']:g}, alpha = {ex['alpha_deg']:g} deg{extra}")
     print(f"\n{len(probs)} problem(s)")
     return 0
 
@@ -84,9 +93,8 @@ def _cmd_derive(args) -> int:
     import textwrap
 
     from .printing import display_equations, format_equations, format_momenta, latex, terminal_width
-    from .spec.loader import load_spec
 
-    spec = load_spec(args.spec)
+    spec = _load(args.spec)
     system = spec.system
     width = terminal_width()
     if spec.problem is not None and hasattr(spec.problem, "title"):
@@ -105,29 +113,124 @@ def _cmd_derive(args) -> int:
     return 0
 
 
-def _cmd_simulate(args) -> int:
+def _run_flags(args) -> dict:
+    return {k: getattr(args, k, None) for k in ("method", "step", "rtol", "atol", "backend", "friction")}
+
+
+def _name_of(key) -> str:
+    """The name of a params/initial key: a string, a Symbol, a coordinate q(t) or its derivative."""
+    from .conventions import VELOCITY_SUFFIX
+    from .model.coordinates import coordinate_name, is_coordinate
+
+    if isinstance(key, str):
+        return key
+    if is_coordinate(key):
+        return coordinate_name(key)
+    if getattr(key, "is_Derivative", False) and is_coordinate(key.expr):
+        return coordinate_name(key.expr) + VELOCITY_SUFFIX
+    return getattr(key, "name", str(key))
+
+
+def _state_names(system) -> list[str]:
+    from .conventions import VELOCITY_SUFFIX
+    from .model.coordinates import coordinate_name
+
+    names = [coordinate_name(q) for q in system.coordinates]
+    return names + [n + VELOCITY_SUFFIX for n in names]
+
+
+def _values(args, spec, label: str) -> tuple[dict, dict]:
+    """(params, initial): the spec's values by name, overridden by --param/--initial (names checked)."""
+    params, initial = _kv(args.param, "param"), _kv(args.initial, "initial")
+    check_names(params, [p.name for p in spec.system.parameters] + sorted(_input_parameters(spec)), "param", label)
+    check_names(initial, _state_names(spec.system), "initial", label)
+    return ({**{_name_of(k): v for k, v in spec.params.items()}, **params},
+            {**{_name_of(k): v for k, v in spec.initial.items()}, **initial})
+
+
+def _load(spec: str):
+    """``load_spec(spec)``, but a mistyped problem id is answered from the index before anything heavy loads."""
+    from pathlib import Path
+
+    if Path(spec).suffix.lower() not in (".toml", ".py") and not _is_greenspan(spec):
+        from .corpus.index import unknown_id_error
+
+        error = unknown_id_error(spec)
+        if error is not None:
+            raise error
+    from .progress import heartbeat
     from .spec.loader import load_spec
 
+    with heartbeat(f"loading {spec}"):
+        return load_spec(spec)
+
+
+_PLOT_SUFFIXES = (".png", ".pdf", ".svg", ".jpg", ".jpeg", ".eps", ".ps", ".tif", ".tiff", ".webp")
+_OUTPUTS = {"plot": _PLOT_SUFFIXES, "csv": None, "animate": (".gif", ".mp4"), "out": (".csv", ".parquet"),
+            "store": (".csv", ".parquet")}
+
+
+def _check_outputs(args) -> None:
+    """Refuse an output path whose folder does not exist or whose suffix cannot be written, before any work."""
+    from pathlib import Path
+
+    for attr, suffixes in _OUTPUTS.items():  # suffixes None: any name
+        value = getattr(args, attr, None)
+        if not isinstance(value, str):
+            continue
+        path = Path(value)
+        if attr == "out" and args.command == "bench":  # a folder, created when missing
+            if path.exists() and not path.is_dir():
+                raise SpecError(f"--out {value}: exists and is not a folder (bench writes several files into it)")
+            continue
+        flag = f"--{attr}"
+        if suffixes is not None and path.suffix.lower() not in suffixes:
+            raise SpecError(f"{flag} {value}: write a {' or '.join(suffixes)} file")
+        folder = path.parent if str(path.parent) else Path(".")
+        if not folder.is_dir():
+            raise SpecError(f"{flag} {value}: the folder {folder} does not exist")
+        if not os.access(folder, os.W_OK):
+            raise SpecError(f"{flag} {value}: the folder {folder} is not writable")
+
+
+def _is_greenspan(spec: str) -> bool:
+    return spec.strip().lower().startswith("greenspan")
+
+
+def _refuse(args, names: dict[str, str], why: str) -> None:
+    """SpecError for the first of ``names`` (attribute → "flag" or "flag: hint") given on the command line."""
+    for attr, text in names.items():
+        value = getattr(args, attr, None)
+        if value not in (None, False, []):
+            flag, _, hint = text.partition(": ")
+            raise SpecError(f"{flag} does not apply to {why}" + (f" ({hint})" if hint else ""))
+
+
+def _cmd_simulate(args) -> int:
     if args.model is not None and not args.spec.lower().startswith("greenspan-"):
         raise SpecError("--model applies to greenspan-N only")
     if args.model == "molecular":
         return _greenspan_molecular(args)
-    spec = load_spec(args.spec)
+    return _simulate(args)
+
+
+def _simulate(args) -> int:
+    from .progress import heartbeat
+
+    spec = _load(args.spec)
     if spec.system is None:
         raise SpecError(f"{args.spec}: this problem has no equations of motion to simulate")
-    params = {**spec.params, **_kv(args.param, "param")}
-    initial = {**spec.initial, **_kv(args.initial, "initial")}
+    label = spec.label or args.spec
+    params, initial = _values(args, spec, label)
     t_end = args.t_end if args.t_end is not None else spec.t_end
     if t_end is None:
         raise SpecError(f"{args.spec}: no end time: pass --t-end")
     if not initial:
-        raise SpecError(f"{args.spec}: no initial conditions (the problem has no dynamics to simulate)")
-    options = dict(spec.options)
-    options.update(method=args.method, rtol=args.rtol, atol=args.atol, backend=args.backend)
+        raise SpecError(f"{args.spec}: no initial conditions (the problem has no dynamics to simulate): pass "
+                        f"--initial for each of {', '.join(_state_names(spec.system))}")
+    options = merge_run_options(spec.options, _run_flags(args), label)
     if args.spec.lower().startswith("greenspan-"):
-        return _greenspan_rigid(args, spec, float(t_end))
-    if args.friction:
-        options["friction"] = args.friction
+        return _greenspan_rigid(args, spec, float(t_end), params, initial, options)
     if not args.quiet:
         from .printing import format_equations
 
@@ -138,14 +241,23 @@ def _cmd_simulate(args) -> int:
     inputs = _input_values(spec, args, params)
     if inputs:
         options["inputs"] = inputs
-    sol = spec.system.simulate(float(t_end), initial, params, **options)
+    with heartbeat(f"integrating {label} to t = {float(t_end):g} with {options['method']}"):
+        sol = spec.system.simulate(float(t_end), initial, params, **options)
     print(f"{spec.label}: {spec.system!r}")
     print(f"method {sol.method}, {sol.nfev} right-hand-side evaluations, {len(sol.t)} output points")
-    names = sol.names
-    final = ", ".join(f"{n}={v:.10g}" for n, v in zip(names, sol.y[-1]))
+    tol = (f"step {options['step']:g}" if options["method"] in FIXED_STEP
+           else f"rtol {options.get('rtol', 1e-9):g}, atol {options.get('atol', 1e-11):g}")
+    friction = f", friction {options['friction']}" if "friction" in options else ""
+    print(f"settings: {tol}, backend {options.get('backend', 'python')}{friction}")
+    final = ", ".join(f"{n}={v:.10g}" for n, v in zip(sol.names, sol.y[-1]))
     print(f"state at t={sol.t[-1]:.6g}: {final}")
-    label = "energy drift" if sol.work is None else "power-balance residual"
-    print(f"{label} (relative): {sol.energy_error():.3e}")
+    label_e = "energy drift" if sol.work is None else "power-balance residual"
+    print(f"{label_e} (relative): {sol.energy_error():.3e}")
+    _outputs(args, spec, sol)
+    return 0
+
+
+def _outputs(args, spec, sol) -> None:
     if args.plot:
         sol.plot(args.plot, title=spec.system.name or spec.label)
         print(f"plot written to {args.plot}")
@@ -154,10 +266,11 @@ def _cmd_simulate(args) -> int:
         print(f"CSV written to {args.csv}")
     if args.animate:
         from .plot import animate
+        from .progress import note
 
+        note(f"writing the animation {args.animate}")
         animate(spec.system, sol, args.animate, title=spec.label)
         print(f"animation written to {args.animate}")
-    return 0
 
 
 def _greenspan_report(label, t, vertices, fell, fall_time, extra: str, plot: str | None) -> None:
@@ -189,80 +302,122 @@ def _greenspan_report(label, t, vertices, fell, fall_time, extra: str, plot: str
         print(f"plot written to {plot}")
 
 
-def _greenspan_rigid(args, spec, t_end: float) -> int:
+def _greenspan_rigid(args, spec, t_end: float, params: dict, initial: dict, options: dict) -> int:
     from .discrete.greenspan import run_rigid
+    from .progress import heartbeat, note
 
-    _, sol, verts = run_rigid(spec.problem, t_end, rtol=args.rtol, atol=args.atol, backend=args.backend)
+    _refuse(args, {"input": "--input: the top has no inputs"}, "Greenspan's top")
+    if options["method"] in FIXED_STEP:
+        raise SpecError(f"--method {options['method']}: the rigid Greenspan run stops when the top falls (an "
+                        f"event), which the fixed-step methods do not support; use an adaptive method "
+                        f"({', '.join(ADAPTIVE)})")
+    options = {"rtol": 1e-10, "atol": 1e-12, **options}
+    with heartbeat(f"integrating {spec.label} (rigid model) to t = {t_end:g} with {options['method']}"):
+        _, sol, verts = run_rigid(spec.problem, t_end, params=params, initial=initial, **options)
     fall = [float(e[0]) for e in sol.t_events if len(e)]
-    _greenspan_report(f"{spec.label} (rigid model, 5 DOF, {sol.method})", sol.t, verts, bool(fall),
-                      min(fall) if fall else None, f"energy error (relative): {sol.energy_error():.3e}", args.plot)
+    _greenspan_report(f"{spec.label} (rigid model, 5 DOF, {sol.method}, rtol {options['rtol']:g}, atol "
+                      f"{options['atol']:g})", sol.t, verts, bool(fall), min(fall) if fall else None,
+                      f"energy error (relative): {sol.energy_error():.3e}", args.plot)
+    if args.csv:
+        sol.to_csv(args.csv)
+        print(f"CSV written to {args.csv}")
+    if args.animate:
+        from .plot import animate
+
+        note(f"writing the animation {args.animate}")
+        animate(spec.system, sol, args.animate, links=[(0, 1), (0, 2), (0, 3), (1, 2), (2, 3), (3, 1)],
+                title=spec.label)
+        print(f"animation written to {args.animate}")
     return 0
+
+
+def _greenspan_example(spec: str):
+    from .discrete.greenspan import EXAMPLES
+
+    try:
+        return EXAMPLES[int(spec.split("-", 1)[1])]
+    except (ValueError, KeyError, IndexError):
+        raise SpecError(f"{spec!r}: Greenspan's examples are greenspan-1 … greenspan-14") from None
 
 
 def _greenspan_molecular(args) -> int:
     import time
 
-    from .discrete.greenspan import EXAMPLES, run_molecular
+    import numpy as np
 
-    try:
-        ex = EXAMPLES[int(args.spec.split("-", 1)[1])]
-    except (ValueError, KeyError):
-        raise SpecError(f"{args.spec!r}: Greenspan's examples are greenspan-1 … greenspan-14") from None
+    from .discrete.greenspan import A_PAIR, G, run_molecular
+    from .progress import heartbeat
+
+    why = "the molecular Greenspan model (a fixed-step discrete gradient, dt = --step, 12 Cartesian coordinates)"
+    _refuse(args, {"rtol": "--rtol", "atol": "--atol", "backend": "--backend", "friction": "--friction",
+                   "input": "--input: the top has no inputs",
+                   "initial": "--initial: it starts from the paper's state; --model rigid takes --initial",
+                   "animate": "--animate: the molecular model has no System to draw; --model rigid animates"},
+            why)
+    if args.method is not None and args.method.strip().lower() != "dg":
+        raise SpecError(f"--method {args.method}: the molecular Greenspan model runs the discrete gradient (dg) "
+                        "only; --model rigid takes the other methods")
+    ex = _greenspan_example(args.spec)
+    params = _kv(args.param, "param")
+    check_names(params, _MOLECULAR_PARAMS, "param", f"greenspan-{ex.number} (molecular)")
+    dt = args.step if args.step is not None else 1e-5
     t_end = args.t_end if args.t_end is not None else 110.0
+    if dt > t_end:
+        raise SpecError(f"--step {dt:g} is longer than the run (--t-end {t_end:g})")
+    steps = max(1, int(round(t_end / dt)))
     t0 = time.perf_counter()
-    model, res = run_molecular(ex, t_end)
+    with heartbeat(f"running {steps:,} discrete-gradient steps (the first run compiles the loop with numba, "
+                   "one time)"):
+        model, res = run_molecular(ex, t_end, dt=dt, A=params.get("A", A_PAIR), g=params.get("g", G),
+                                   record_every=max(1, round(steps / 2200)))  # ~2200 states, as the paper's run
     wall = time.perf_counter() - t0
     E = model.energy(res.x, res.v)
-    _greenspan_report(f"greenspan-{ex.number} (molecular model, discrete gradient, dt = 1e-5)", res.t, res.x,
+    _greenspan_report(f"greenspan-{ex.number} (molecular model, discrete gradient, dt = {dt:g})", res.t, res.x,
                       res.fell, res.fall_time,
                       f"{res.steps} steps in {wall:.1f} s; relative energy drift {np.ptp(E) / abs(E[0]):.2e}",
                       args.plot)
+    if args.csv:
+        _molecular_csv(args.csv, res)
+        print(f"CSV written to {args.csv}")
     return 0
+
+
+def _molecular_csv(path: str, res) -> None:
+    import csv
+
+    cols = [f"{v}{i}_{c}" for v in ("x", "v") for i in range(1, 5) for c in "xyz"]
+    with open(path, "w", newline="") as fh:
+        w = csv.writer(fh)
+        w.writerow(["t", *cols])
+        for k in range(len(res.t)):
+            w.writerow([repr(float(res.t[k])), *(repr(float(u)) for u in res.x[k].ravel()),
+                        *(repr(float(u)) for u in res.v[k].ravel())])
+
+
+def _parse_over(items) -> dict:
+    from .sweep import parse_range
+
+    over = {}
+    for item in items:
+        if "=" not in item:
+            raise SpecError(f"--over expects name=start:stop:num (or name=a,b,c), got {item!r}")
+        name, rng = item.split("=", 1)
+        over[name.strip()] = parse_range(rng.strip())
+    return over
 
 
 def _cmd_sweep(args) -> int:
     import time
 
-    from .sweep import parse_range, sweep
+    if args.resume and not args.store:
+        raise SpecError("--resume needs --store (the store holds the runs to skip)")
+    over = _parse_over(args.over)
+    from .progress import active
 
-    over = {}
-    for item in args.over:
-        if "=" not in item:
-            raise SpecError(f"--over expects name=start:stop:num (or name=a,b,c), got {item!r}")
-        name, rng = item.split("=", 1)
-        over[name.strip()] = parse_range(rng.strip())
     common = dict(random=args.random, seed=args.seed, workers=args.workers, store=args.store, resume=args.resume,
-                  progress=not args.no_progress)
+                  progress=active())
     t0 = time.perf_counter()
-    if args.spec.lower().startswith("greenspan"):
-        from .sweep.greenspan_map import stability_task
-
-        if set(over) - {"V", "alpha_deg"}:
-            raise SpecError("greenspan sweeps take --over V=… and --over alpha_deg=… (spin and tilt in degrees)")
-        task = stability_task(args.t_end or 110.0, rtol=args.rtol, atol=args.atol, backend=args.backend)
-        table = sweep(task, over, **common)
-    else:
-        from .spec.loader import load_spec
-
-        spec = load_spec(args.spec)
-        if spec.system is None:
-            raise SpecError(f"{args.spec}: this problem has no equations of motion to sweep")
-        t_end = args.t_end if args.t_end is not None else spec.t_end
-        if t_end is None:
-            raise SpecError(f"{args.spec}: no end time: pass --t-end")
-        options = {**spec.options, "method": args.method, "rtol": args.rtol, "atol": args.atol}
-        params = {**spec.params, **_kv(args.param, "param")}
-        swept_in_inputs = _input_parameters(spec) & set(over)  # parameters of input expressions
-        inputs = _input_values(spec, args, {k: v for k, v in params.items() if k not in swept_in_inputs})
-        params = {k: v for k, v in params.items() if k not in _input_parameters(spec)}
-        if swept_in_inputs:
-            from .sweep.task import InputExpressions
-
-            options["setup"] = InputExpressions(inputs, sorted(swept_in_inputs))
-        elif inputs:
-            options["inputs"] = inputs
-        table = sweep(spec.system, over, t_end=float(t_end), initial={**spec.initial, **_kv(args.initial, "initial")},
-                      params=params, backend=args.backend, **common, **options)
+    table = _sweep_table(args, over, common)
     wall = time.perf_counter() - t0
     counts = table["status"].value_counts().to_dict()
     print(table.drop(columns=["run_id"]).to_string(max_rows=40))
@@ -277,30 +432,92 @@ def _cmd_sweep(args) -> int:
     return 0
 
 
+def _sweep_table(args, over: dict, common: dict):
+    from .sweep import sweep
+
+    if _is_greenspan(args.spec):
+        from .sweep.greenspan_map import stability_task
+
+        if args.spec.strip().lower() != "greenspan":
+            raise SpecError(f"sweep {args.spec!r}: the Greenspan sweep is `lagrange sweep greenspan` (the stability "
+                            "map of the rigid top over V and alpha_deg)")
+        if set(over) - {"V", "alpha_deg"}:
+            raise SpecError("greenspan sweeps take --over V=… and --over alpha_deg=… (spin and tilt in degrees)")
+        _refuse(args, {"param": "--param", "initial": "--initial", "input": "--input"},
+                "the Greenspan stability map (sweep V and alpha_deg with --over)")
+        options = merge_run_options({"rtol": 1e-8, "atol": 1e-10}, _run_flags(args), "greenspan")
+        if options["method"] in FIXED_STEP:
+            raise SpecError(f"--method {options['method']}: the Greenspan map stops each run when the top falls "
+                            "(an event); use an adaptive method")
+        task = stability_task(args.t_end or 110.0, **{"backend": "python", **options})
+        return sweep(task, over, **common)
+    else:
+        spec = _load(args.spec)
+        if spec.system is None:
+            raise SpecError(f"{args.spec}: this problem has no equations of motion to sweep")
+        label = spec.label or args.spec
+        t_end = args.t_end if args.t_end is not None else spec.t_end
+        if t_end is None:
+            raise SpecError(f"{args.spec}: no end time: pass --t-end")
+        params, initial = _values(args, spec, label)
+        options = merge_run_options(spec.options, _run_flags(args), label)
+        backend = options.pop("backend", "python")
+        swept_in_inputs = _input_parameters(spec) & set(over)  # parameters of input expressions
+        inputs = _input_values(spec, args, {k: v for k, v in params.items() if k not in swept_in_inputs})
+        params = {k: v for k, v in params.items() if k not in _input_parameters(spec)}
+        if swept_in_inputs:
+            from .sweep.task import InputExpressions
+
+            options["setup"] = InputExpressions(inputs, sorted(swept_in_inputs))
+        elif inputs:
+            options["inputs"] = inputs
+        return sweep(spec.system, over, t_end=float(t_end), initial=initial, params=params, backend=backend,
+                      **common, **options)
+
+
 def _cmd_bench(args) -> int:
+    from .bench.problems import PROBLEMS
     from .bench.suite import run_suite
 
+    unknown = [p for p in args.problem or [] if p not in PROBLEMS]
+    if unknown:
+        raise SpecError(f"--problem {', '.join(unknown)}: unknown benchmark problem (choose from "
+                        f"{', '.join(PROBLEMS)})")
     run_suite(args.problem, quick=args.quick, out=args.out, heyoka=not args.no_heyoka)
     return 0
 
 
 def _cmd_check(args) -> int:
     from .gauss.check import check_spec
-    from .spec.loader import load_spec
-
-    result = check_spec(load_spec(args.spec), samples=args.samples, seed=args.seed, params=_kv(args.param, "param"))
+    spec = _load(args.spec)
+    params = _kv(args.param, "param")
+    if spec.system is not None:
+        check_names(params, [p.name for p in spec.system.parameters], "param", spec.label or args.spec)
+    result = check_spec(spec, samples=args.samples, seed=args.seed, params=params)
     print(result)
     return 0 if result.ok or not result.applicable else 1
 
 
 def _cmd_verify(args) -> int:
     from .corpus.registry import all_problems, get_problem
+    from .progress import track
 
-    probs = [get_problem(i) for i in args.ids] if args.ids else list(all_problems())
-    if args.chapter is not None:
-        probs = [p for p in probs if p.chapter == args.chapter]
+    if args.ids:
+        probs = [get_problem(i) for i in args.ids]
+        if args.chapter is not None:
+            probs = [p for p in probs if p.chapter == args.chapter]
+    else:
+        from .corpus import index
+
+        if args.chapter is not None and not index.entries(args.chapter):
+            raise SpecError(f"no problems in chapter {args.chapter}")
+        if index.stale_modules():  # the index misses a changed module: load the whole corpus
+            probs = [p for p in all_problems() if args.chapter is None or p.chapter == args.chapter]
+        else:
+            ids = [e["id"] for e in index.entries(args.chapter)]
+            probs = [get_problem(i) for i in track(ids, desc="loading problems")]
     failed = 0
-    for p in probs:
+    for p in track(probs, desc="verifying"):
         for r in p.check():
             if not r.ok:
                 failed += 1
@@ -428,9 +645,7 @@ def sp_factor(e):
 def _cmd_hamiltonian(args) -> int:
     from .analysis.hamilton import hamiltonian
     from .printing import pretty
-    from .spec.loader import load_spec
-
-    spec = load_spec(args.spec)
+    spec = _load(args.spec)
     if spec.system is None:
         raise SpecError(f"{args.spec}: this problem has no equations of motion")
     h = hamiltonian(spec.system)
@@ -441,40 +656,87 @@ def _cmd_hamiltonian(args) -> int:
     return 0
 
 
+def _positive(text: str) -> float:
+    """argparse type: a positive finite number."""
+    try:
+        value = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a number") from None
+    if not (math.isfinite(value) and value > 0):
+        raise argparse.ArgumentTypeError(f"{text!r} is not a positive finite number")
+    return value
+
+
+def _count(minimum: int):
+    def parse(text: str) -> int:
+        try:
+            value = int(text)
+        except ValueError:
+            raise argparse.ArgumentTypeError(f"{text!r} is not an integer") from None
+        if value < minimum:
+            raise argparse.ArgumentTypeError(f"{text!r} is less than {minimum}")
+        return value
+
+    return parse
+
+
+def _method_help() -> str:
+    return (f"integration method (case-insensitive; default: the spec's, else DOP853): adaptive "
+            f"{', '.join(SCIPY)} (scipy), taylor (Taylor series), auto (chosen from the equations); fixed-step "
+            f"{', '.join(FIXED_STEP)} (geometric, need --step)")
+
+
+def _run_arguments(p: argparse.ArgumentParser) -> None:
+    """The integration flags of simulate and sweep: default None, so the spec's values stand unless given."""
+    p.add_argument("--t-end", type=_positive, help="end time (default: the spec's)")
+    p.add_argument("--method", metavar="METHOD", help=_method_help())
+    p.add_argument("--step", type=_positive, metavar="H",
+                   help=f"step size of the fixed-step methods ({', '.join(FIXED_STEP)}; required by them, refused "
+                        "by the adaptive ones); for greenspan-N --model molecular the time step (default 1e-5)")
+    p.add_argument("--rtol", type=_positive, help="relative tolerance of the adaptive methods (default: the spec's, "
+                   "else 1e-9)")
+    p.add_argument("--atol", type=_positive, help="absolute tolerance (default: the spec's, else 1e-11)")
+    p.add_argument("--backend", choices=BACKENDS, help="code generation: python (default), numba, reference or auto")
+    p.add_argument("--friction", choices=["events", "regularize"], help="treatment of sign() switches (default "
+                   "events)")
+    p.add_argument("--param", action="append", metavar="NAME=VALUE", help="override a parameter value")
+    p.add_argument("--initial", action="append", metavar="NAME=VALUE", help="override an initial value (x, x_dot)")
+    p.add_argument("--input", action="append", metavar="NAME=VALUE", help="a constant value of an input")
+
+
 def _parser() -> argparse.ArgumentParser:
     ap = argparse.ArgumentParser(
         prog="lagrange",
         description="Derive Lagrange's equations the way Wells does, and simulate them.",
+        epilog="Install: pip install lagrange-dynamics (the import name and this command are `lagrange`).",
     )
     ap.add_argument("--version", action="version", version=f"lagrange {__version__}")
     sub = ap.add_subparsers(dest="command", required=True)
+    quiet = argparse.ArgumentParser(add_help=False)
+    quiet.add_argument("--no-progress", action="store_true", help="no progress reports on stderr (they are shown "
+                       "only when stderr is a terminal)")
 
     p = sub.add_parser("problems", help="list the worked problems of the corpus by chapter")
     p.add_argument("--chapter", type=int, help="only this chapter")
     p.set_defaults(func=_cmd_problems)
 
     spec_help = "a problem id (see `lagrange problems`), a Python file defining `system`, or a TOML spec"
-    p = sub.add_parser("derive", help="print Lagrange's equations of a system")
+    p = sub.add_parser("derive", parents=[quiet], help="print Lagrange's equations of a system")
     p.add_argument("spec", help=spec_help)
     p.add_argument("--latex", action="store_true", help="print LaTeX instead of text")
     p.set_defaults(func=_cmd_derive)
 
-    p = sub.add_parser("simulate", help="integrate the equations of motion")
-    p.add_argument("spec", help=spec_help)
-    p.add_argument("--t-end", type=float, help="end time (default: the spec's)")
+    p = sub.add_parser("simulate", parents=[quiet], help="integrate the equations of motion",
+                       description="Integrate the equations of motion. The spec's [simulate] values (method, "
+                       "rtol, …) are the defaults; the flags given override them.")
+    p.add_argument("spec", help=spec_help + "; or greenspan-N (Greenspan's top, example N = 1 … 14)")
     p.add_argument("--plot", help="write a PNG plot to this path")
     p.add_argument("--csv", help="write the trajectory to this CSV path")
     p.add_argument("--animate", help="write an animation (.gif, or .mp4 with ffmpeg) to this path")
-    p.add_argument("--method", default="DOP853", help="DOP853 (default), RK45, RK23, LSODA, Radau, BDF or auto")
-    p.add_argument("--rtol", type=float, default=1e-9)
-    p.add_argument("--atol", type=float, default=1e-11)
-    p.add_argument("--backend", default="python", help="python (default), numba, reference or auto")
-    p.add_argument("--friction", choices=["events", "regularize"], help="treatment of sign() switches")
-    p.add_argument("--param", action="append", metavar="NAME=VALUE", help="override a parameter value")
-    p.add_argument("--initial", action="append", metavar="NAME=VALUE", help="override an initial value (x, x_dot)")
-    p.add_argument("--input", action="append", metavar="NAME=VALUE", help="a constant value of an input")
-    p.add_argument("-q", "--quiet", action="store_true", help="do not print the equations first")
-    p.add_argument("--model", choices=["rigid", "molecular"], help="greenspan-N only: the model to run")
+    _run_arguments(p)
+    p.add_argument("-q", "--quiet", action="store_true", help="do not print the equations first; no progress")
+    p.add_argument("--model", choices=["rigid", "molecular"], help="greenspan-N only: the model to run (molecular: "
+                   "takes --t-end, --step, --param A=…/g=…, --plot, --csv)")
     p.set_defaults(func=_cmd_simulate)
 
     p = sub.add_parser("modes", help="linearize about an equilibrium: matrices, frequencies, mode shapes")
@@ -486,59 +748,80 @@ def _parser() -> argparse.ArgumentParser:
     p.add_argument("--force", action="store_true", help="linearize even where the point is not an equilibrium")
     p.set_defaults(func=_cmd_modes)
 
-    p = sub.add_parser("hamiltonian", help="print H and Hamilton's canonical equations")
+    p = sub.add_parser("hamiltonian", parents=[quiet], help="print H and Hamilton's canonical equations")
     p.add_argument("spec", help=spec_help)
     p.set_defaults(func=_cmd_hamiltonian)
 
-    p = sub.add_parser("sweep", help="run a grid or random sample of parameters/initial values, tabulate results")
+    p = sub.add_parser("sweep", parents=[quiet],
+                       help="run a grid or random sample of parameters/initial values, tabulate results")
     p.add_argument("spec", help=spec_help + "; or greenspan (the top's stability map over V and alpha_deg)")
     p.add_argument("--over", action="append", required=True, metavar="NAME=START:STOP:NUM",
                    help="a swept quantity (parameter, input, coordinate, q_dot) and its values (or NAME=a,b,c)")
-    p.add_argument("--random", type=int, metavar="N", help="N Latin-hypercube points in the ranges instead of the grid")
+    p.add_argument("--random", type=_count(1), metavar="N",
+                   help="N Latin-hypercube points in the ranges instead of the grid")
     p.add_argument("--seed", type=int, default=0, help="seed of --random (default 0)")
-    p.add_argument("--workers", type=int, help="worker processes (default: CPU count; 0: in this process)")
+    p.add_argument("--workers", type=_count(0), help="worker processes (default: CPU count; 0: in this process)")
     p.add_argument("--out", help="write the table to this .csv (or .parquet) path")
     p.add_argument("--store", help="append each finished run to this .csv/.parquet store as it completes")
     p.add_argument("--resume", action="store_true", help="with --store: skip the runs already stored")
-    p.add_argument("--t-end", type=float, help="end time (default: the spec's)")
-    p.add_argument("--method", default="DOP853")
-    p.add_argument("--rtol", type=float, default=1e-9)
-    p.add_argument("--atol", type=float, default=1e-11)
-    p.add_argument("--backend", default="python", help="python (default), numba, reference or auto")
-    p.add_argument("--param", action="append", metavar="NAME=VALUE", help="override a parameter value")
-    p.add_argument("--initial", action="append", metavar="NAME=VALUE", help="override an initial value (x, x_dot)")
-    p.add_argument("--input", action="append", metavar="NAME=VALUE", help="a constant value of an input")
-    p.add_argument("--no-progress", action="store_true", help="no progress bar")
+    _run_arguments(p)
+    p.add_argument("-q", "--quiet", action="store_true", help="no progress bar")
     p.set_defaults(func=_cmd_sweep)
 
-    p = sub.add_parser("bench", help="work-precision benchmarks: error against time and evaluations, energy drift")
+    p = sub.add_parser("bench", parents=[quiet],
+                       help="work-precision benchmarks: error against time and evaluations, energy drift")
     p.add_argument("--problem", action="append", metavar="NAME",
                    help="double_pendulum, nlink, top, kepler, stiff, stick_slip or greenspan (default: all)")
-    p.add_argument("--quick", action="store_true", help="short runs, two tolerances, python backend (seconds)")
+    p.add_argument("--quick", action="store_true", help="short runs, two tolerances, python backend (a few minutes)")
     p.add_argument("--out", help="write workprecision.md, .json and one PNG per problem into this directory")
     p.add_argument("--no-heyoka", action="store_true", help="skip the heyoka.py comparison even if installed")
+    p.add_argument("-q", "--quiet", action="store_true", help="no progress reports")
     p.set_defaults(func=_cmd_bench)
 
-    p = sub.add_parser("check", help="compare Lagrange's accelerations with Gauss' principle at random states")
+    p = sub.add_parser("check", parents=[quiet],
+                       help="compare Lagrange's accelerations with Gauss' principle at random states")
     p.add_argument("spec", help=spec_help)
-    p.add_argument("--samples", type=int, default=5, help="number of random states (default 5)")
+    p.add_argument("--samples", type=_count(1), default=5, help="number of random states (default 5)")
     p.add_argument("--seed", type=int, default=0, help="seed of the random states (default 0)")
     p.add_argument("--param", action="append", metavar="NAME=VALUE", help="override a parameter value")
     p.set_defaults(func=_cmd_check)
 
-    p = sub.add_parser("verify", help="check corpus problems against the book's answers")
+    p = sub.add_parser("verify", parents=[quiet], help="check corpus problems against the book's answers")
     p.add_argument("ids", nargs="*", help="problem ids (default: all)")
     p.add_argument("--chapter", type=int)
     p.add_argument("-v", "--verbose", action="store_true")
+    p.add_argument("-q", "--quiet", action="store_true", help="no progress reports")
     p.set_defaults(func=_cmd_verify)
     return ap
 
 
-def main(argv: list[str] | None = None) -> int:
-    args = _parser().parse_args(argv)
+def _silence_stdout() -> None:
+    """After a closed pipe: point stdout at /dev/null so the interpreter's final flush cannot fail again."""
     try:
-        return int(args.func(args) or 0)
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+        os.close(devnull)
+    except (OSError, ValueError, AttributeError):  # pragma: no cover - stdout is not a real file
+        pass
+
+
+def main(argv: list[str] | None = None) -> int:
+    """Run the ``lagrange`` command; returns the exit status (0 ok, 1 a check failed, 2 bad input,
+    3 internal error, 141 the output pipe was closed)."""
+    try:
+        args = _parser().parse_args(argv)
+        _check_outputs(args)
+        with _progress(args):
+            status = int(args.func(args) or 0)
+        sys.stdout.flush()
+        return status
+    except BrokenPipeError:  # `lagrange simulate ex3.4 | head -2`: the reader is gone, stop quietly
+        _silence_stdout()
+        return 141
     except LagrangeError as exc:
+        print(f"lagrange: error: {exc}", file=sys.stderr)
+        return 2
+    except OSError as exc:  # a file that cannot be read or written (checked up front where possible)
         print(f"lagrange: error: {exc}", file=sys.stderr)
         return 2
     except KeyboardInterrupt:  # pragma: no cover

@@ -1,6 +1,6 @@
 """The optional symengine fast path: which sympy expressions symengine carries exactly, and the round trip.
 
-symengine (``pip install "lagrange[fast]"``) differentiates and eliminates common subexpressions tens of
+symengine (``pip install "lagrange-dynamics[fast]"``) differentiates and eliminates common subexpressions tens of
 times faster than sympy. lagrange uses it only where the result is provably the same expression:
 :func:`carries` admits Add, Mul, Pow, integers, rationals, π, e, the elementary functions of
 :data:`FUNCTIONS` and plain symbols with distinct names — no floats (their precision could change), no

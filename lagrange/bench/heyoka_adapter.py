@@ -1,6 +1,6 @@
 """Optional comparison with heyoka.py (Taylor integrator, LLVM-compiled): ``heyoka.lagrangian`` +
 ``taylor_adaptive``. heyoka is imported lazily; without it :func:`heyoka_available` is False and the
-benchmark skips it with a note (``pip install "lagrange[heyoka]"``).
+benchmark skips it with a note (``pip install "lagrange-dynamics[heyoka]"``).
 
 The Lagrangian handed to heyoka is lagrange's ``T − V`` (plain symbols, parameter values substituted)
 converted with ``heyoka.from_sympy``; heyoka then derives its own equations (``heyoka.lagrangian``, with

@@ -50,8 +50,11 @@ def _version(dist: str) -> str | None:
 def machine_info() -> dict:
     """CPU model, core count, OS, thread settings and the versions of everything measured."""
     versions = {"python": platform.python_version()}
-    for dist in ("numpy", "scipy", "sympy", "numba", "heyoka", "lagrange"):
+    for dist in ("numpy", "scipy", "sympy", "numba", "heyoka"):
         versions[dist] = _version(dist)
+    from .. import __version__  # the distribution is lagrange-dynamics (PyPI's "lagrange" is another project)
+
+    versions["lagrange"] = _version("lagrange-dynamics") or __version__
     threads = {k: os.environ[k] for k in ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "NUMBA_NUM_THREADS")
                if k in os.environ}
     return {"cpu": _cpu_model(), "cores": os.cpu_count(), "os": f"{platform.system()} {platform.release()}",

@@ -335,11 +335,13 @@ def run_problem(problem: BenchProblem, *, quick: bool = False, heyoka: bool = Tr
     ``quick`` uses :data:`QUICK_TOLERANCES`, one timed repeat and short horizons (for tests and a first
     look); otherwise :data:`TOLERANCES` and the median of 3 runs.
     """
+    from ..progress import note as progress_note
     from .first_result import first_result as run_first
     from .first_result import routes_for
     from .longrun import energy_runs
 
     say = log or (lambda s: None)
+    progress_note(f"{problem.name}: deriving the equations and the reference solution")
     t0 = time.perf_counter()
     system = problem.build()
     derive_s = time.perf_counter() - t0
@@ -353,12 +355,14 @@ def run_problem(problem: BenchProblem, *, quick: bool = False, heyoka: bool = Tr
         settings = problem.steps if spec.kind == "fixed" else tols
         if spec.method == "Radau" and problem.reference_method != "Radau":  # seconds per run below 1e-10
             settings = [v for v in settings if v >= 1e-10]
+        progress_note(f"{problem.name}: {spec.label} at {len(settings)} settings")
         curve = run_curve(problem, system, spec, ref, settings, repeats=reps, budget=0.5, stop=1.0 if quick else 2.5)
         curves.append(curve)
         best = min((p.error for p in curve.points), default=float("nan"))
         say(f"  {spec.label:<40} {len(curve.points)} points, best error {best:.1e} {curve.note[:90]}")
     result = ProblemResult(problem, ref, curves, derive_s)
     if energy:
+        progress_note(f"{problem.name}: long energy runs")
         result.energy, notes = energy_runs(problem, system, quick=quick, heyoka=heyoka)
         for run in result.energy:
             say(f"  long run {run.label:<36} max energy error {np.max(run.error):.1e} in {run.wall:.2f} s")
@@ -366,6 +370,7 @@ def run_problem(problem: BenchProblem, *, quick: bool = False, heyoka: bool = Tr
             say(f"  long run: {note}")
     if first_result:
         for route in routes_for(problem, heyoka=heyoka):
+            progress_note(f"{problem.name}: time to first result, {route} (fresh processes)")
             fr = run_first(problem, route, ref.states, quick=quick)
             result.first_result.append(fr)
             say(f"  first result {route:<10} " + (f"{fr.total:.2f} s" if fr.total is not None else fr.note))

@@ -48,7 +48,8 @@ def run_suite(problems: Sequence[str] | None = None, *, quick: bool = False, out
     chosen = [get_problem(n, quick=quick) for n in names]  # validates every name first
     use_heyoka = heyoka and heyoka_available()
     if heyoka and not use_heyoka:
-        say("note: heyoka.py is not installed, skipping the heyoka comparison (pip install \"lagrange[heyoka]\")")
+        say("note: heyoka.py is not installed, skipping the heyoka comparison "
+            '(pip install "lagrange-dynamics[heyoka]")')
     ttfr = (not quick) if first_result is None else first_result
     t0 = time.perf_counter()
     results = [run_problem(p, quick=quick, heyoka=use_heyoka, first_result=ttfr, log=say) for p in chosen]

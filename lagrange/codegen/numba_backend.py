@@ -5,7 +5,7 @@ the lagrange, numba, NumPy and Python versions (:func:`cache_key`), so numba's o
 exactly when the model is: a re-run with the same model skips the JIT, a changed model or an upgrade gets a
 new file. Entries are written atomically and checked on use; a corrupted numba cache is purged and rebuilt
 (``tests/test_cache.py``). Numba is optional
-(``pip install lagrange[fast]``); a clear :class:`~lagrange.errors.BackendError` says so when it is
+(``pip install "lagrange-dynamics[fast]"``); a clear :class:`~lagrange.errors.BackendError` says so when it is
 missing.
 """
 
@@ -77,6 +77,9 @@ def write_module(prefix: str, text: str) -> tuple[str, Path]:
     except (OSError, UnicodeDecodeError):
         current = None
     if current != text:
+        from ..progress import note
+
+        note(f"compiling the generated {prefix} code with numba (one time for this model; cached in {path.parent})")
         atomic_write(path, text)
     return f"lagrange_{prefix}_{key}", path
 

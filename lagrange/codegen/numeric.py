@@ -7,7 +7,8 @@ Backends (``backend=``):
 ``"numba"``
     The same source compiled with ``numba.njit``; the module is written to the on-disk cache
     (:func:`lagrange.codegen.numba_backend.cache_dir`, ``$LAGRANGE_CACHE_DIR``) keyed by a hash of the
-    source, so numba's own cache makes re-runs skip the JIT. Needs the ``fast`` extra (``pip install lagrange[fast]``).
+    source, so numba's own cache makes re-runs skip the JIT. Needs the ``fast`` extra
+    (``pip install "lagrange-dynamics[fast]"``).
 ``"reference"``
     Plain ``sympy.lambdify`` of M and f without CSE plus ``numpy.linalg.solve``: the slow oracle every
     fast backend is tested against.

@@ -1,23 +1,51 @@
-"""The verified problem corpus: problems with the book's answers and the checks that compare them."""
+"""The verified problem corpus: problems with the book's answers and the checks that compare them.
 
-from .answers import (
-    Answer,
-    ConservedMomenta,
-    ConstraintForce,
-    EnergySplit,
-    EquationsOfMotion,
-    GeneralizedForces,
-    JacobiIntegral,
-    KineticEnergy,
-    MassMatrix,
-    PotentialEnergy,
-    PowerFunction,
-    Quantity,
-    TrajectoryValues,
-)
-from .compare import Mismatch
-from .problem import CheckResult, Problem, Simulation
-from .registry import all_problems, get_problem, problem_ids
+Names are imported lazily (PEP 562) so :mod:`lagrange.corpus.index` (what ``lagrange problems`` reads)
+loads without sympy; one line ``"name": ".submodule"`` in :data:`_EXPORTS` per public name.
+"""
+
+from __future__ import annotations
+
+import importlib
+
+#: public name -> the submodule that defines it (imported on first use)
+_EXPORTS: dict[str, str] = {
+    "Answer": ".answers",
+    "ConservedMomenta": ".answers",
+    "ConstraintForce": ".answers",
+    "EnergySplit": ".answers",
+    "EquationsOfMotion": ".answers",
+    "GeneralizedForces": ".answers",
+    "JacobiIntegral": ".answers",
+    "KineticEnergy": ".answers",
+    "MassMatrix": ".answers",
+    "PotentialEnergy": ".answers",
+    "PowerFunction": ".answers",
+    "Quantity": ".answers",
+    "TrajectoryValues": ".answers",
+    "Mismatch": ".compare",
+    "CheckResult": ".problem",
+    "Problem": ".problem",
+    "Simulation": ".problem",
+    "all_problems": ".registry",
+    "get_problem": ".registry",
+    "problem_ids": ".registry",
+}
+
+
+def __getattr__(name: str):
+    try:
+        module = _EXPORTS[name]
+    except KeyError:
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}") from None
+    value = getattr(importlib.import_module(module, __name__), name)
+    globals()[name] = value
+    return value
+
+
+def __dir__() -> list[str]:
+    return sorted(set(globals()) | set(__all__))
+
 
 __all__ = [
     "Answer",

@@ -62,22 +62,24 @@ def problem_ids() -> list[str]:
 
 
 def get_problem(problem_id: str) -> Problem:
-    """The problem with this id (case-insensitive); a SpecError suggests close ids otherwise."""
-    key = problem_id.strip().lower()
-    # fast path: module chNN_<id> (variants "id-suffix" live in the module of "id"), so the CLI does not
-    # import the whole corpus to run one problem
-    stem = "_" + key.split("-")[0].replace(".", "_")
-    base = re.sub(r"(\d)[a-z]+$", r"\1", stem)  # "ex13.7a" lives in the module of ex13.7
-    for name in _module_names():
-        if any(name.lower().endswith(s_) or s_ + "_" in name.lower() + "_" for s_ in {stem, base}):
-            for p in _module_problems(name):
-                if p.id.lower() == key:
-                    return p
-    for p in all_problems():
-        if p.id.lower() == key:
-            return p
-    import difflib
+    """The problem with this id (case-insensitive); a SpecError suggests close ids otherwise.
 
-    close = difflib.get_close_matches(key, [p.id for p in all_problems()], n=5)
+    Looks the id up in the corpus index (:mod:`lagrange.corpus.index`) and imports only its module; an id
+    missing from a stale index (a module changed since it was written) is searched for by importing the
+    whole corpus.
+    """
+    from . import index
+
+    key = problem_id.strip().lower()
+    entry = index.find(key)
+    if entry is not None:
+        for p in _module_problems(entry["module"]):
+            if p.id.lower() == key:
+                return p
+    if index.stale_modules():  # a module changed since the index was written: look everywhere
+        for p in all_problems():
+            if p.id.lower() == key:
+                return p
+    close = index.suggestions(key)
     hint = f"; did you mean {', '.join(close)}?" if close else "; run `lagrange problems` for the list"
     raise SpecError(f"no problem with id {problem_id!r}{hint}")

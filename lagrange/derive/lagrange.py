@@ -134,7 +134,7 @@ def kinetic_derivatives(T, q, qd) -> tuple[list, dict, list]:
     + \frac{\partial^2 T}{\partial\dot q_r\partial t} - \frac{\partial T}{\partial q_r}`
     (``d/dt ∂T/∂q̇_r − ∂T/∂q_r`` without its ``M q̈`` part).
 
-    Differentiated by symengine when it is installed (``pip install "lagrange[fast]"``), T has at least
+    Differentiated by symengine when it is installed (``pip install "lagrange-dynamics[fast]"``), T has at least
     :data:`SYMENGINE_MIN_NODES` nodes and holds only what symengine carries back exactly
     (:func:`lagrange.symengine_bridge.carries`), else by sympy; the two give the same expressions up to the
     order of terms (tests/test_derive.py compares them). Measured with the rest of the

@@ -24,9 +24,9 @@ from dataclasses import dataclass
 import numpy as np
 import sympy as sp
 
-from ..conventions import t
+from ..conventions import VELOCITY_SUFFIX, t
 from ..model.bodies import Particle
-from ..model.coordinates import coordinates, parameters
+from ..model.coordinates import coordinate_name, coordinates, is_coordinate, parameters
 from ..model.rotations import EulerAngles
 from ..model.system import System
 from .pair_dg import PairSystem
@@ -95,9 +95,10 @@ def molecular_model(masses=(1.0, 1.0, 1.0, 1.0), A: float = A_PAIR, g: float = G
     return PairSystem(masses, A * (-1 / r**3 + 1 / r**5), r, weights=[0.0, g, g, g], fixed=[(0, 2)])
 
 
-def run_molecular(ex: Example, t_end: float = 110.0, *, dt: float = 1e-5, record_every: int = 5000):
-    """The paper's run: returns (model, DGResult)."""
-    model = molecular_model(ex.masses)
+def run_molecular(ex: Example, t_end: float = 110.0, *, dt: float = 1e-5, record_every: int = 5000,
+                  A: float = A_PAIR, g: float = G):
+    """The paper's run (``A``, ``g``: the pair-potential strength and gravity); returns (model, DGResult)."""
+    model = molecular_model(ex.masses, A=A, g=g)
     x0, v0 = initial_vertices(ex)
     steps = int(round(t_end / dt))
     return model, model.integrate(x0, v0, dt=dt, steps=steps, record_every=record_every, fall_particles=[1, 2, 3])
@@ -150,10 +151,13 @@ def _vertex_function(system: System):
 
 
 def run_rigid(ex: Example, t_end: float = 110.0, *, t_eval=None, rtol: float = 1e-10, atol: float = 1e-12,
-              backend: str = "python"):
+              backend: str = "python", params: Mapping | None = None, initial: Mapping | None = None, **options):
     """The rigid model over ``t_end`` with a terminal event when a weighted vertex reaches z = 0.
 
-    Returns (system, trajectory, vertices) with vertices (k, 4, 3) at the output times."""
+    ``params`` (``{"g": …}``) and ``initial`` (by coordinate name, ``"theta_dot"``…) override the paper's
+    values; ``options`` go to :func:`~lagrange.integrate.run.simulate` (``method`` …: an adaptive one,
+    since the fall is an event). Returns (system, trajectory, vertices) with vertices (k, 4, 3) at the
+    output times."""
     system, coords = rigid_system(ex.masses)
     verts = _vertex_function(system)
     n = len(coords)
@@ -167,8 +171,10 @@ def run_rigid(ex: Example, t_end: float = 110.0, *, t_eval=None, rtol: float = 1
         events.append(ev)
     if t_eval is None:
         t_eval = np.linspace(0.0, t_end, 2201)
-    sol = system.simulate(t_end, rigid_initial(ex, coords), {"g": G}, t_eval=t_eval, events=events, rtol=rtol,
-                          atol=atol, backend=backend)
+    start = {coordinate_name(k) if is_coordinate(k) else coordinate_name(k.expr) + VELOCITY_SUFFIX: v
+             for k, v in rigid_initial(ex, coords).items()}
+    sol = system.simulate(t_end, {**start, **(initial or {})}, {"g": G, **(params or {})}, t_eval=t_eval,
+                          events=events, rtol=rtol, atol=atol, backend=backend, **options)
     V = np.array([verts(y[:n]) for y in sol.y])
     return system, sol, V
 

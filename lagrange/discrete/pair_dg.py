@@ -21,7 +21,7 @@ Non-rational φ fall back to the plain quotient with a midpoint-derivative guard
 
 Fixed constraints "coordinate c of particle i held at a value" (the top's tip on the plane z = 0)
 remove that unknown; its reaction does no work. The implicit step is solved by Newton's method with the
-generated Jacobian; the whole loop is compiled with numba (``pip install lagrange[fast]``), so millions of
+generated Jacobian; the whole loop is compiled with numba (``pip install "lagrange-dynamics[fast]"``), so millions of
 steps run without Python in the loop.
 """
 

@@ -130,6 +130,9 @@ def library_path(cc: list[str]) -> Path:
 def _open(cc: list[str], target: Path) -> CTaylor | str:
     """The library at ``target``, built first when missing; or the reason it is unavailable."""
     if not target.exists():
+        from ..progress import note
+
+        note(f"building the C Taylor interpreter (one time; cached in {target.parent})")
         reason = _build(cc, target)
         if reason is not None:
             return reason

@@ -6,7 +6,7 @@
     The generic loops of :mod:`lagrange.integrate._rk_loops`, compiled once per machine and cached on
     disk, called with the model's ``field`` (:mod:`lagrange.codegen.rk_source`) as a numba first-class
     function: a new model only pays for JIT-compiling its own right-hand side. Implies ``backend="numba"``
-    (``pip install lagrange[fast]``). Supports ``DOP853`` and ``RK45`` for unconstrained systems without
+    (``pip install "lagrange-dynamics[fast]"``). Supports ``DOP853`` and ``RK45`` for unconstrained systems without
     events or dry-friction switches; anything else is a :class:`TypeError` naming the feature.
 ``"scipy"``
     ``solve_ivp`` (events, constraints, friction switches, every scipy method).

@@ -25,7 +25,7 @@ tape passes (steps × order).
 
 Scope: unconstrained systems whose equations are analytic (no ``sign``/``Abs``/``Piecewise``); the work
 integral of non-conservative systems is integrated with the state. Needs a C compiler or numba
-(``pip install lagrange[fast]``); the compiled series needs numba.
+(``pip install "lagrange-dynamics[fast]"``); the compiled series needs numba.
 """
 
 from __future__ import annotations

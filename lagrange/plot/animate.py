@@ -189,15 +189,21 @@ def animate(system, trajectory, path: str | Path | None = None, *, links: str | 
         return [dots, *rods, path_line, label, *(l for ls in frame_lines for l in ls)]
 
     if path is not None:
+        from ..progress import counter
+
         path = Path(path)
-        if path.suffix.lower() == ".gif":
-            from matplotlib.animation import PillowWriter
+        update_bar, close = counter(len(idx), desc=f"frames of {path.name}")
+        try:
+            if path.suffix.lower() == ".gif":
+                from matplotlib.animation import PillowWriter
 
-            _record(fig, update, len(idx), PillowWriter(fps=fps), path, fig.dpi)
-        else:
-            from matplotlib.animation import FFMpegWriter
+                _record(fig, update, len(idx), PillowWriter(fps=fps), path, fig.dpi, update_bar)
+            else:
+                from matplotlib.animation import FFMpegWriter
 
-            _record(fig, update, len(idx), FFMpegWriter(fps=fps), path, fig.dpi)
+                _record(fig, update, len(idx), FFMpegWriter(fps=fps), path, fig.dpi, update_bar)
+        finally:
+            close()
     if inline:
         return _inline(fig, update, len(idx), fps, dpi)
     if path is not None:
@@ -205,12 +211,15 @@ def animate(system, trajectory, path: str | Path | None = None, *, links: str | 
     return FuncAnimation(fig, update, frames=len(idx), interval=1000 / fps, blit=False)
 
 
-def _record(fig, update, n: int, writer, path: Path, dpi: float) -> None:
-    """Draw every frame once into ``writer`` (FuncAnimation.save draws each frame twice)."""
+def _record(fig, update, n: int, writer, path: Path, dpi: float, progress=None) -> None:
+    """Draw every frame once into ``writer`` (FuncAnimation.save draws each frame twice); ``progress(i)`` is
+    told the number of frames done."""
     with writer.saving(fig, str(path), dpi):
         for f in range(n):
             update(f)
             writer.grab_frame()
+            if progress is not None:
+                progress(f + 1)
 
 
 def _inline(fig, update, n: int, fps: int, dpi: int) -> InlineAnimation:

@@ -2,7 +2,7 @@
 
 * :func:`sweep` — a grid or random sample of parameters and initial values → a tidy pandas table of per-run
   results (any ``concurrent.futures`` executor or a ``distributed.Client``; failures reported per run;
-  resumable from a store). Needs the ``sweep`` extra (``pip install "lagrange[sweep]"``).
+  resumable from a store). Needs the ``sweep`` extra (``pip install "lagrange-dynamics[sweep]"``).
 * :func:`integrate_ensemble` — many initial states / parameter sets integrated together in one process,
   each member with its own step-size control, the stages evaluated for all members at once by
   :meth:`NumericModel.rhs_many <lagrange.codegen.numeric.NumericModel.rhs_many>`.

@@ -61,11 +61,13 @@ def fall_summary(traj) -> dict:
 
 
 def stability_task(t_end: float = 110.0, *, rtol: float = 1e-8, atol: float = 1e-10, backend: str = "python",
-                   masses: Sequence[float] = (1.0, 1.0, 1.0, 1.0), n_points: int = 2201) -> SimulationTask:
-    """The sweep task ``point {V, alpha_deg} → row`` of the rigid top (system compiled once, here)."""
+                   masses: Sequence[float] = (1.0, 1.0, 1.0, 1.0), n_points: int = 2201, **options) -> SimulationTask:
+    """The sweep task ``point {V, alpha_deg} → row`` of the rigid top (system compiled once, here); ``options``
+    go to :func:`~lagrange.integrate.run.simulate` (``method`` …)."""
     system, coords = gs.rigid_system(tuple(masses))
     base = gs.rigid_initial(gs.EXAMPLES[1], coords)
-    return SimulationTask(system, t_end, base, {"g": gs.G}, options={"rtol": rtol, "atol": atol, "n_points": n_points},
+    return SimulationTask(system, t_end, base, {"g": gs.G},
+                          options={"rtol": rtol, "atol": atol, "n_points": n_points, **options},
                           summaries=[fall_summary], setup=top_setup, events=fall_events, backend=backend)
 
 
