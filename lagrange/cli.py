@@ -536,9 +536,8 @@ def _cmd_modes(args) -> int:
     from .analysis.small_oscillations import characteristic_roots, linearize, normal_modes
     from .conventions import t as t_sym
     from .printing import pretty
-    from .spec.loader import load_spec
 
-    spec = load_spec(args.spec)
+    spec = _load(args.spec)
     if spec.system is None:
         raise SpecError(f"{args.spec}: this problem has no equations of motion")
     system = spec.system
