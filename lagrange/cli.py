@@ -530,6 +530,7 @@ def _cmd_verify(args) -> int:
 
 
 def _cmd_modes(args) -> int:
+    spec = _load(args.spec)  # first: a mistyped id is answered from the index before sympy loads
     import numpy as np
     import sympy
 
@@ -537,7 +538,6 @@ def _cmd_modes(args) -> int:
     from .conventions import t as t_sym
     from .printing import pretty
 
-    spec = _load(args.spec)
     if spec.system is None:
         raise SpecError(f"{args.spec}: this problem has no equations of motion")
     system = spec.system
