@@ -419,3 +419,22 @@ def test_motor_torque_input_on_a_rigid_body_spins_it_up_as_the_closed_form():
     sol = s.simulate(2, {phi: 0, phi.diff(t): 0}, {"I": 0.5}, inputs={tau: lambda tt: 3 * tt}, n_points=21)
     assert np.max(np.abs(sol["phi"] - 3 * sol.t**3 / (6 * 0.5))) < 1e-8
     assert sol.energy_error() < 1e-8
+
+
+def test_cli_sweeps_an_input_constant_and_a_parameter_of_an_input_expression(tmp_path, capsys):
+    pytest.importorskip("pandas")
+    import pandas as pd
+
+    from lagrange.cli import main
+
+    spec = tmp_path / "forced.toml"
+    spec.write_text(SPEC + '[inputs_values]\nF = "F0*cos(w*t)"\n')
+    out = tmp_path / "f0.csv"
+    assert main(["sweep", str(spec), "--over", "F0=0.5,1.5", "--workers", "0", "--no-progress", "--out", str(out)]) == 0
+    table = pd.read_csv(out)
+    assert np.allclose(table["final_x"], table["F0"] * (math.cos(3) - math.cos(6)) / 3, atol=1e-7)
+    out = tmp_path / "f.csv"
+    assert main(["sweep", str(spec), "--over", "F=1,2", "--workers", "0", "--no-progress", "--out", str(out)]) == 0
+    table = pd.read_csv(out)
+    assert np.allclose(table["final_x"], table["F"] / 4 * (1 - math.cos(6)), atol=1e-7)
+    capsys.readouterr()

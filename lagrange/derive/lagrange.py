@@ -29,7 +29,7 @@ from ..model.coordinates import (
     to_symbols,
     velocity_symbol,
 )
-from ..model.inputs import Input
+from ..model.inputs import is_input
 from ..simplification import is_zero
 from ..symengine_bridge import FAILURES, Restorer, carries, symengine
 from .equations import Equations
@@ -100,7 +100,7 @@ def lagrange_equations(system) -> Equations:
     everything += [to_symbols(c.position, coords) for c in system.constraints if c.position is not None]
     everything += [to_symbols(sp.Matrix(c.friction), coords) for c in system.constraints if c.friction]
     params = set().union(*(e.free_symbols for e in everything)) - internal
-    inputs = {s for s in params if isinstance(s, Input)}
+    inputs = {s for s in params if is_input(s)}
     params -= inputs
     return Equations(
         coordinates=tuple(coords),

@@ -37,8 +37,11 @@ class Input(sp.Symbol):
     """A time-varying input of a system: a real symbol whose value is given at simulate time.
 
     Compares unequal to a plain ``Symbol`` of the same name (its class is part of its identity), so an
-    input is never confused with a parameter.
+    input is never confused with a parameter. Recognised by :func:`is_input` through the class attribute
+    ``is_lagrange_input`` (not by class identity, which a re-import of this module would change).
     """
+
+    is_lagrange_input = True
 
     def __new__(cls, name: str, **assumptions):
         assumptions.setdefault("real", True)
@@ -65,12 +68,12 @@ def inputs(spec: str | Sequence[str]):
 
 def is_input(obj) -> bool:
     """True for an :class:`Input` symbol."""
-    return isinstance(obj, Input)
+    return isinstance(obj, sp.Symbol) and getattr(obj, "is_lagrange_input", False) is True
 
 
 def inputs_in(exprs: Iterable) -> set:
     """The :class:`Input` symbols among the free symbols of ``exprs``."""
     out: set = set()
     for e in exprs:
-        out |= {s for s in sp.sympify(e).free_symbols if isinstance(s, Input)}
+        out |= {s for s in sp.sympify(e).free_symbols if is_input(s)}
     return out

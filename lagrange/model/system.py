@@ -25,7 +25,7 @@ from .bodies import Body
 from .constraints import Differential, Holonomic, Nonholonomic, normalize_constraints
 from .coordinates import coordinate_name, is_coordinate, normalize_time, virtual_displacement
 from .forces import generalized_forces
-from .inputs import Input, inputs_in
+from .inputs import inputs_in, is_input
 from .integrals import evaluate_integrals
 
 if TYPE_CHECKING:
@@ -148,7 +148,7 @@ class System:
         coords = _as_coordinate_tuple(coordinates)
         bad = [c for c in coords if not is_coordinate(c)]
         for c in bad:
-            if isinstance(c, Input):
+            if is_input(c):
                 problems.append(
                     f"{c} is an input (lagrange.inputs), not a coordinate: an input is a value given at "
                     "simulate time (simulate(..., inputs={...})); declare a degree of freedom with "
@@ -294,7 +294,7 @@ class System:
                     f"{what} contains a symbol 't' that is not lagrange.t (different assumptions); "
                     "use lagrange.t for time"
                 )
-            elif isinstance(s, Input):
+            elif is_input(s):
                 continue  # an input: given at simulate time, never a parameter (names checked in _check_inputs)
             elif s.name in reserved:
                 problems.append(
@@ -443,7 +443,7 @@ class System:
 
         params = dict(params or {})
         used = {s.name for s in self._equations.numeric_parameters}
-        declared = {s.name for s in self.declared_symbols if not isinstance(s, Input)}
+        declared = {s.name for s in self.declared_symbols if not is_input(s)}
         if self._declared_parameters is not None:
             declared |= {s.name for s in self._declared_parameters}
         out, dropped = {}, []
@@ -571,7 +571,7 @@ def _check_inputs(T, V, specs, presc, P, D, F, coords, problems) -> None:
     names = {coordinate_name(q) for q in coords}
     used = inputs_in([P, D, *F.values()])
     others = set().union(*(sp.sympify(e).free_symbols for e in (T, V, P, D, *F.values())))
-    clash_params = {s.name for s in others if not isinstance(s, Input)}
+    clash_params = {s.name for s in others if not is_input(s)}
     for u in sorted(used, key=str):
         if u.name in names or u.name.removesuffix(VELOCITY_SUFFIX) in names:
             problems.append(f"the input {u} is named like a coordinate or velocity of this system: an input is not "
