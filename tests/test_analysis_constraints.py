@@ -269,6 +269,23 @@ def test_rolling_disc_symbolic_characteristic_polynomial(disc):
     assert is_zero(sym.characteristic_polynomial(lam) - expected)
 
 
+def test_mixed_holonomic_and_nonholonomic_disc_matches_the_plain_disc(disc):
+    """The disc with a superfluous height h of the centre, held by the holonomic h = r cos(lean) (V = m g h):
+    the same roots as the plain disc (the bicycle's mix of one holonomic and several rolling constraints)."""
+    x, y, q1, q2, q3 = disc.coordinates
+    h = coordinates("h")
+    m, g, r = parameters("m g r")
+    mixed = System([x, y, q1, q2, q3, h], T=disc.T, V=m * g * h,
+                   constraints=[Nonholonomic(c.velocity, c.name) for c in disc.constraints]
+                   + [Holonomic(h - r * sp.cos(q2), "height")])
+    P = {"m": 1.0, "g": 1.0, "r": 1.0}
+    for spin in (0.2, 1.0):
+        about = {q3.diff(t): spin, x.diff(t): spin}
+        lin = linearize(mixed, {**about, h: 1.0}, params=P)
+        assert h not in lin.coordinates and len(lin.states) == 8  # 6 − 1 coordinates, 6 − 3 speeds
+        assert_same_roots(characteristic_roots(lin), characteristic_roots(disc, P, about=about), 1e-9)
+
+
 # -------------------------------------------------------------------------------------------- inputs: B
 
 

@@ -271,8 +271,10 @@ def linearize(system, about: Mapping | None = None, velocities: Mapping | None =
         ``"x_dot"``; default 0, non-zero for a steady motion) and inputs (default 0), keyed by object or name.
         Values may be expressions in the parameters. Unknown names raise.
     velocities : mapping, optional — reference velocities (the older spelling; same keys as in ``about``)
-    params : mapping, optional — parameter values: the numeric route (float matrices, accurate to rounding;
-        the exact Jacobians are generated once per system). Without it the result is symbolic.
+    params : mapping, optional — parameter values: the numeric route (float matrices, accurate to rounding:
+        complex-step derivatives of the generated M, f, A, b, c, or their exact symbolic Jacobians when sign,
+        Abs or atan2 appear; the code is generated once per system and reused). Without it the result is
+        symbolic. ``params["t"]`` sets the time of a non-autonomous unconstrained system (default 0).
     inputs : sequence of Symbols, optional — the inputs u (columns of ℬ); default ``system.derived.inputs``
     independent : sequence, optional — the independent coordinates (default: chosen by pivoting, keeping
         the coordinates declared first independent)
