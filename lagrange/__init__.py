@@ -29,7 +29,7 @@ from .model.coordinates import coordinates, delta, parameters
 from .model.eliminate import eliminate
 from .model.inertia import Inertia
 from .model.rigid_body import RigidBody, Torque
-from .model.rotations import EulerAngles, Quaternion, rot_x, rot_y, rot_z
+from .model.rotations import EulerAngles, Quaternion, RotationSequence, rot_x, rot_y, rot_z
 from .model.system import System
 from .printing import latex, pretty
 from .sweep import sweep
@@ -49,6 +49,7 @@ __all__ = [
     "Inertia",
     "EulerAngles",
     "Quaternion",
+    "RotationSequence",
     "rot_x",
     "rot_y",
     "rot_z",

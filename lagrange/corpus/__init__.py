@@ -16,7 +16,7 @@ from .answers import (
     TrajectoryValues,
 )
 from .compare import Mismatch
-from .problem import CheckResult, Problem, Simulation
+from .problem import CheckResult, LazySystem, Problem, Simulation
 from .registry import all_problems, get_problem, problem_ids
 
 __all__ = [
@@ -36,6 +36,7 @@ __all__ = [
     "Mismatch",
     "CheckResult",
     "Problem",
+    "LazySystem",
     "Simulation",
     "all_problems",
     "get_problem",
