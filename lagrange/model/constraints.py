@@ -224,7 +224,8 @@ def is_integrable(coefficients: Sequence, a_t, coords: Sequence) -> bool:
     ``a_i(∂_j a_k − ∂_k a_j) + a_j(∂_k a_i − ∂_i a_k) + a_k(∂_i a_j − ∂_j a_i) = 0``.
 
     First numerically (:func:`_frobenius_numeric`): one component clearly nonzero at a random point proves the
-    form non-integrable, which settles the usual rolling constraint in milliseconds. Only when every component
+    form non-integrable, which settles a rolling constraint in a fraction of a second (the symbolic test took 74 s
+    of a bicycle declared with multiplied-out rotation matrices). Only when every component
     vanishes at the sample points (or they cannot be evaluated) is each triple proved zero symbolically.
     """
     coords = list(coords)
@@ -273,7 +274,7 @@ def _frobenius_numeric(a: list, syms: list, involved: list) -> bool | None:
     except Exception:  # noqa: BLE001 - anything lambdify cannot print is left to the symbolic test
         return None
     rnd = random.Random(20456)
-    idx = [i for i in involved]
+    idx = list(involved)
     n_ok = 0
     with mpmath.workdps(_FROBENIUS_DIGITS):
         h = mpmath.mpf(10) ** -15
