@@ -46,6 +46,29 @@ def test_problem_is_registered_and_lazy():
     assert p.operating_point[bike.x.diff(t)] == bike.v
 
 
+def test_declaration_builds_with_non_integrable_rolling_constraints():
+    # a fresh System (the problem's is built lazily): four bodies, four rolling constraints that the Frobenius
+    # test finds non-integrable (no IntegrableConstraintWarning) and one holonomic ground contact
+    import warnings
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", lg.IntegrableConstraintWarning)
+        system = bike.whipple_bicycle()
+    kinds = [c.kind for c in system.constraints]
+    assert kinds == ["nonholonomic"] * 4 + ["holonomic"]
+    assert not any(c.integrable for c in system.constraints)
+    assert [b.name for b in system.bodies] == ["rear wheel", "rear frame", "front frame", "front wheel"]
+    assert all(isinstance(b.orientation, lg.RotationSequence) for b in system.bodies)
+    # upright, straight running satisfies every constraint (the operating point is on the manifold)
+    point = bike.operating_point(sp.Rational(5), bike.BENCHMARK)
+    values = {bike.SYMBOLS[k]: val for k, val in bike.BENCHMARK.items()}
+    values[bike.lam] = sp.pi / 10
+    for c in system.constraints:
+        assert sp.simplify(c.velocity.subs(point).subs(values)) == 0, c.name
+    contact = system.constraints[-1].position  # the front wheel touches the ground in the reference configuration
+    assert sp.simplify(contact.subs(point).subs(values)) == 0
+
+
 def test_rear_rolling_constraint_is_the_general_formula():
     # the hand-simplified rear constraint equals the velocity of the wheel's material contact point
     # (hub velocity + ω × (contact − hub)) written out in full, at random states
