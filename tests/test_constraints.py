@@ -86,6 +86,32 @@ class TestDeclarations:
         assert len(found) == 1 and "integrable" in str(found[0].message)  # d(xy) = 0 is; dz − y dx is not
         assert s.constraints[0].integrable
 
+    def test_frobenius_numeric_decides_non_integrable_forms_and_defers_integrable_ones(self):
+        from lagrange.model.constraints import _frobenius_numeric, is_integrable
+        from lagrange.model.coordinates import position_symbol
+
+        x, y, th, z = coordinates("x y theta z")
+        r, k = parameters("r k")
+        syms = [position_symbol(q) for q in (x, y, th, z)] + [t]
+
+        def numeric(coeffs, a_t=0):
+            a = [sp.sympify(c).subs({q: position_symbol(q) for q in (x, y, th, z)}) for c in coeffs] + [sp.sympify(a_t)]
+            return _frobenius_numeric(a, syms, list(range(len(syms))))
+
+        # knife edge dx cosθ + dy sinθ − r dz... rolling is not integrable: the numeric test alone says so
+        rolling = [sp.cos(th), sp.sin(th), 0, -r]
+        assert numeric(rolling) is False and not is_integrable(rolling, 0, [x, y, th, z])
+        # an exact differential times an integrating factor, with messy coefficients: integrable; the numeric
+        # test cannot prove that (it only finds zeros) and leaves it to the symbolic proof
+        F = x * y + sp.sin(z) * x + k * th**2
+        factor = sp.exp(y) / (1 + x**2)
+        exact = [factor * sp.diff(F, q) for q in (x, y, th, z)]
+        assert numeric(exact) is None and is_integrable(exact, 0, [x, y, th, z])
+        # explicit time: dx − t dy is not integrable in (x, y, t)
+        assert numeric([1, -t, 0, 0]) is False and not is_integrable([1, -t, 0, 0], 0, [x, y, th, z])
+        # the moving constraint dx − v dt (v constant) is integrable (x − v t = const)
+        assert is_integrable([1, 0, 0, 0], -k, [x, y, th, z])
+
 
 class TestMultipliers:
     def test_cartesian_pendulum_matches_polar_and_tension(self):

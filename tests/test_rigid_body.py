@@ -13,12 +13,14 @@ from lagrange import (
     Particle,
     Quaternion,
     RigidBody,
+    RotationSequence,
     SingularMassMatrixError,
     System,
     Torque,
     coordinates,
     parameters,
     rot_x,
+    rot_y,
     rot_z,
     t,
 )
@@ -231,3 +233,42 @@ def test_nested_frames_compose():
     assert all(is_zero(e) for e in (P - expected))
     w = inner.angular_velocity()
     assert is_zero(w[2] - (a + b))
+
+
+def test_rotation_sequence_matches_its_matrix_and_the_general_angular_velocity():
+    """RotationSequence's closed-form ω (body and inertial) equals vee(RᵀṘ) of the multiplied-out matrix, and a
+    rigid body's T is the same with either orientation (numbers at random states)."""
+    from lagrange.model.rotations import body_angular_velocity, space_angular_velocity
+
+    a, b, c = coordinates("a b c")
+    lam, m = parameters("lam m")
+    seq = RotationSequence(("z", a), ("x", b), ("y", c + lam), ("z", a - c), ("y", -lam))
+    R = rot_z(a) * rot_x(b) * rot_y(c + lam) * rot_z(a - c) * rot_y(-lam)
+    assert (seq.matrix - R).applyfunc(sp.expand) == sp.zeros(3, 3)
+    J = sp.Matrix([[3, 0, 1], [0, 2, 0], [1, 0, 4]])
+    pairs = [
+        (seq.body_angular_velocity(), body_angular_velocity(R)),
+        (seq.space_angular_velocity(), space_angular_velocity(R)),
+        (RigidBody(m, J, origin=(a, b, 0), orientation=seq).kinetic_energy(),
+         RigidBody(m, J, origin=(a, b, 0), orientation=R).kinetic_energy()),
+    ]
+    coords = [a, b, c]
+    rng = np.random.default_rng(7)
+    for _ in range(3):
+        values = dict(zip(["a", "b", "c", "a_dot", "b_dot", "c_dot", "lam", "m"], rng.uniform(-2, 2, 8)))
+        values["m"] = abs(values["m"])
+        def number(expr, values=values):
+            e = sp.Matrix([to_symbols(expr, coords)])
+            return np.array(e.evalf(subs={s: values[s.name] for s in e.free_symbols}), dtype=float)
+
+        for mine, general in pairs:
+            assert np.allclose(number(mine), number(general), rtol=1e-12, atol=1e-12)
+    with pytest.raises(ValueError, match="'x', 'y' or 'z'"):
+        RotationSequence(("w", a))
+    with pytest.raises(ValueError, match="at least one"):
+        RotationSequence()
+    with pytest.raises(ValueError, match="pairs"):
+        RotationSequence(a)
+    # substitution keeps the sequence (used by lagrange.eliminate)
+    body = RigidBody(m, J, orientation=seq).subs({c: 0})
+    assert isinstance(body.orientation, RotationSequence) and not body.orientation.matrix.has(c)

@@ -8,7 +8,33 @@ from dataclasses import dataclass, field
 from .answers import Answer
 from .compare import Mismatch
 
-__all__ = ["Problem", "Simulation", "CheckResult"]
+__all__ = ["Problem", "Simulation", "CheckResult", "LazySystem"]
+
+
+class LazySystem:
+    """A problem's System built on first use, for declarations that take seconds to build (the Whipple
+    bicycle): listing or importing the corpus must not pay for them. Every attribute is the built System's
+    (``problem.system.simulate(...)``, ``.derived``, ``.coordinates``); :meth:`build` returns the System itself
+    for functions that need the object."""
+
+    def __init__(self, build, name: str = ""):
+        self._build = build
+        self._system = None
+        self.name = name
+
+    def build(self):
+        """The System (built once)."""
+        if self._system is None:
+            self._system = self._build()
+        return self._system
+
+    def __getattr__(self, attr):
+        if attr.startswith("__") or attr in ("_build", "_system"):
+            raise AttributeError(attr)
+        return getattr(self.build(), attr)
+
+    def __repr__(self) -> str:
+        return repr(self._system) if self._system is not None else f"<System {self.name!r}: built on first use>"
 
 
 @dataclass(frozen=True)

@@ -209,6 +209,24 @@ def _pythagoras(expr):
     return min(candidates, key=sp.count_ops)
 
 
+_EXPAND_LIMIT = 400
+
+
+def _expanded_terms(expr) -> int:
+    """An upper bound on the number of terms of ``expand(expr)`` at the top level, without expanding: sums
+    add, products multiply, integer powers of sums raise (functions count as one term)."""
+    if expr.is_Add:
+        return sum(_expanded_terms(a) for a in expr.args)
+    if expr.is_Mul:
+        out = 1
+        for a in expr.args:
+            out *= _expanded_terms(a)
+        return out
+    if expr.is_Pow and expr.exp.is_Integer and expr.exp > 0:
+        return _expanded_terms(expr.base) ** int(expr.exp)
+    return 1
+
+
 def _tidy_kinetic(T):
     """Compact a textbook-sized T (sin² + cos² = 1) so that M and f stay small and readable.
 
@@ -231,8 +249,10 @@ def _tidy_kinetic(T):
 
 def _tidy_force(F):
     """The same Pythagorean cleanup for a generalized force or a mass-matrix entry (e.g. a force vector
-    rotating with t), accepted unless it grows the expression."""
-    if F == 0 or sp.count_ops(F) > _KINETIC_LIMIT:
+    rotating with t), accepted unless it grows the expression. Skipped when expanding would give more than
+    :data:`_EXPAND_LIMIT` terms (:func:`_expanded_terms`): the result would be rejected as longer anyway, and
+    expanding a bicycle's mass matrix that way took half of its derivation."""
+    if F == 0 or sp.count_ops(F) > _KINETIC_LIMIT or _expanded_terms(F) > _EXPAND_LIMIT:
         return F
     e = _pythagoras(F)
     return e if sp.count_ops(e) <= sp.count_ops(F) else F

@@ -236,10 +236,10 @@ def to_symbols(expr, coords: Sequence):
 
 def to_functions(expr, coords: Sequence):
     """Inverse of :func:`to_symbols`: plain symbols back to functions of t (for printing)."""
-    expr = sp.sympify(expr)
-    m = {}
-    for q in coords:
-        m[acceleration_symbol(q)] = q.diff(t, 2)
-        m[velocity_symbol(q)] = q.diff(t)
-        m[position_symbol(q)] = q
-    return expr.xreplace(m)
+    return sp.sympify(expr).xreplace(_function_map(tuple(coords)))
+
+
+@lru_cache(maxsize=256)
+def _function_map(coords: tuple) -> dict:
+    """``{q_ddot: q''(t), q_dot: q'(t), q: q(t)}`` (memoized like :func:`_symbol_map`)."""
+    return {v: k for k, v in _symbol_map(coords).items()}

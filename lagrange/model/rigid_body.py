@@ -26,7 +26,7 @@ import sympy as sp
 from .bodies import as_vector
 from .coordinates import normalize_time, time_derivative
 from .inertia import Inertia
-from .rotations import EulerAngles, Quaternion, as_rotation, body_angular_velocity
+from .rotations import EulerAngles, Quaternion, RotationSequence, as_rotation, body_angular_velocity
 
 __all__ = ["RigidBody", "Torque"]
 
@@ -53,7 +53,8 @@ class RigidBody:
     inertia : :class:`~lagrange.model.inertia.Inertia`, signed 3x3 tensor, or (I_x, I_y, I_z) principal
         moments — about the body origin O, along the body axes
     origin : inertial position of O (1–3 expressions in the coordinates and t); default the fixed origin
-    orientation : :class:`EulerAngles` (Wells' z-x-z), :class:`Quaternion`, or a rotation matrix R whose
+    orientation : :class:`EulerAngles` (Wells' z-x-z), :class:`Quaternion`, :class:`RotationSequence`
+        (elementary rotations about body axes, compact angular velocity for long chains), or a rotation matrix R whose
         columns are the body axes in inertial components; default: axes parallel to the inertial ones
     com : centre of mass relative to O along the body axes (default O itself)
     name : label
@@ -86,6 +87,8 @@ class RigidBody:
     @cached_property
     def space_angular_velocity(self) -> sp.Matrix:
         """ω along the inertial axes (``R ω_body``)."""
+        if isinstance(self.orientation, RotationSequence):
+            return self.orientation.space_angular_velocity()
         return self.R * self.angular_velocity
 
     def point(self, r_body) -> sp.Matrix:
@@ -127,6 +130,8 @@ class RigidBody:
             orient = EulerAngles(s(orient.psi), s(orient.theta), s(orient.phi))
         elif isinstance(orient, Quaternion):
             orient = Quaternion(*(s(c) for c in orient.components), name=orient.name)
+        elif isinstance(orient, RotationSequence):
+            orient = orient.subs(mapping)
         else:
             orient = self.R.subs(mapping).doit()
         return RigidBody(s(self.mass), self.inertia.subs(mapping), self.origin.subs(mapping).doit(), orient,

@@ -36,6 +36,7 @@ __all__ = [
     "rot_z",
     "EulerAngles",
     "Quaternion",
+    "RotationSequence",
     "as_rotation",
     "body_angular_velocity",
     "space_angular_velocity",
@@ -138,9 +139,77 @@ class Quaternion:
         return (Holonomic(sum(q**2 for q in self.components) - 1, self.name),)
 
 
+_ELEMENTARY = {"x": rot_x, "y": rot_y, "z": rot_z}
+_AXIS = {"x": (1, 0, 0), "y": (0, 1, 0), "z": (0, 0, 1)}
+
+
+class RotationSequence:
+    r"""An orientation composed of elementary rotations about the current body axes,
+    ``R = R_{a_1}(θ_1) R_{a_2}(θ_2) ⋯ R_{a_k}(θ_k)`` (each ``a_i`` one of ``"x"``, ``"y"``, ``"z"``; each
+    ``θ_i`` an expression in coordinates, t and parameters — a constant tilt is an angle without coordinates).
+
+    Its angular velocity along the body axes has the closed form
+
+    .. math:: \omega = \sum_{i=1}^{k} (R_{i+1} \cdots R_k)^{\mathsf T}\, e_{a_i}\, \dot\theta_i ,
+
+    which stays compact for long chains (a bicycle's front wheel: yaw, roll, pitch, steer, spin), where
+    ``vee(RᵀṘ)`` of the multiplied-out matrix needs trigonometric simplification to shrink back.
+
+    >>> from lagrange import coordinates, t
+    >>> a, b = coordinates("a b")
+    >>> RotationSequence(("z", a), ("x", b)).body_angular_velocity().T
+    Matrix([[Derivative(b(t), t), sin(b(t))*Derivative(a(t), t), cos(b(t))*Derivative(a(t), t)]])
+    """
+
+    def __init__(self, *rotations):
+        steps = []
+        for item in rotations:
+            try:
+                axis, angle = item
+            except (TypeError, ValueError):
+                raise ValueError(f"RotationSequence takes (axis, angle) pairs, got {item!r}") from None
+            if axis not in _ELEMENTARY:
+                raise ValueError(f"rotation axis {axis!r} must be 'x', 'y' or 'z'")
+            steps.append((axis, sp.sympify(angle)))
+        if not steps:
+            raise ValueError("RotationSequence needs at least one (axis, angle) pair")
+        self.rotations: tuple = tuple(steps)
+
+    @property
+    def matrix(self) -> sp.Matrix:
+        R = sp.eye(3)
+        for axis, angle in self.rotations:
+            R = R * _ELEMENTARY[axis](angle)
+        return R
+
+    def body_angular_velocity(self) -> sp.Matrix:
+        """The closed form above: each rate carried back through the rotations after it."""
+        w = sp.zeros(3, 1)
+        for axis, angle in self.rotations:
+            w = _ELEMENTARY[axis](angle).T * w + sp.Matrix(_AXIS[axis]) * angle.diff(t)
+        return w
+
+    def space_angular_velocity(self) -> sp.Matrix:
+        """ω along the inertial axes: ``Σ_i R_1 ⋯ R_{i−1} e_{a_i} θ̇_i``."""
+        w, R = sp.zeros(3, 1), sp.eye(3)
+        for axis, angle in self.rotations:
+            w += R * sp.Matrix(_AXIS[axis]) * angle.diff(t)
+            R = R * _ELEMENTARY[axis](angle)
+        return w
+
+    def subs(self, mapping) -> RotationSequence:
+        return RotationSequence(*((a, sp.sympify(th).subs(mapping).doit()) for a, th in self.rotations))
+
+    def constraints(self) -> tuple:
+        return ()
+
+    def __repr__(self) -> str:
+        return "RotationSequence(" + ", ".join(f"({a!r}, {th})" for a, th in self.rotations) + ")"
+
+
 def as_rotation(orientation) -> sp.Matrix:
-    """The rotation matrix of an orientation (EulerAngles, Quaternion or a 3x3 matrix)."""
-    if isinstance(orientation, (EulerAngles, Quaternion)):
+    """The rotation matrix of an orientation (EulerAngles, Quaternion, RotationSequence or a 3x3 matrix)."""
+    if isinstance(orientation, (EulerAngles, Quaternion, RotationSequence)):
         return orientation.matrix
     R = sp.Matrix(orientation)
     if R.shape != (3, 3):
@@ -164,8 +233,9 @@ def _compact(e):
 
 
 def body_angular_velocity(orientation) -> sp.Matrix:
-    """ω along the body axes: closed forms for EulerAngles and Quaternion, ``vee(Rᵀ Ṙ)`` otherwise."""
-    if isinstance(orientation, (EulerAngles, Quaternion)):
+    """ω along the body axes: closed forms for EulerAngles, Quaternion and RotationSequence, ``vee(Rᵀ Ṙ)``
+    otherwise."""
+    if isinstance(orientation, (EulerAngles, Quaternion, RotationSequence)):
         return orientation.body_angular_velocity()
     R = as_rotation(orientation)
     return _vee(R.T * time_derivative(R)).applyfunc(_compact)
@@ -173,4 +243,6 @@ def body_angular_velocity(orientation) -> sp.Matrix:
 
 def space_angular_velocity(orientation) -> sp.Matrix:
     """ω along the inertial axes, ``R ω_body``."""
+    if isinstance(orientation, RotationSequence):
+        return orientation.space_angular_velocity()
     return (as_rotation(orientation) * body_angular_velocity(orientation)).applyfunc(_compact)
