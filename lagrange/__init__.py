@@ -28,6 +28,7 @@ from .model.constraints import Differential, Holonomic, IntegrableConstraintWarn
 from .model.coordinates import coordinates, delta, parameters
 from .model.eliminate import eliminate
 from .model.inertia import Inertia
+from .model.material_point import MaterialPoint
 from .model.rigid_body import RigidBody, Torque
 from .model.rotations import EulerAngles, Quaternion, rot_x, rot_y, rot_z
 from .model.system import System
@@ -46,6 +47,7 @@ __all__ = [
     "Force",
     "RigidBody",
     "Torque",
+    "MaterialPoint",
     "Inertia",
     "EulerAngles",
     "Quaternion",

@@ -16,18 +16,27 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from dataclasses import dataclass
-from typing import Protocol, runtime_checkable
+from typing import TYPE_CHECKING, Protocol, runtime_checkable
 
 import sympy as sp
 
 from ..errors import DeclarationError
 from .coordinates import time_derivative
 
+if TYPE_CHECKING:
+    from .material_point import MaterialPoint
+    from .rigid_body import RigidBody
+
 __all__ = ["Body", "Particle", "Force", "as_vector"]
 
 
 def as_vector(components, what: str) -> sp.Matrix:
-    """A 3-component column vector from 1, 2 or 3 expressions (missing ones are 0)."""
+    """A 3-component column vector from 1, 2 or 3 expressions (missing ones are 0); a
+    :class:`~lagrange.model.material_point.MaterialPoint` gives its position."""
+    from .material_point import MaterialPoint
+
+    if isinstance(components, MaterialPoint):
+        return components.position
     if isinstance(components, sp.MatrixBase):
         comps = list(components)
     elif isinstance(components, Sequence) and not isinstance(components, str):
@@ -103,19 +112,88 @@ class Particle:
 
 @dataclass(frozen=True, eq=False)
 class Force:
-    """A force ``vector`` (1–3 Cartesian components) applied at a particle or a point.
+    r"""A force ``vector`` (1–3 Cartesian components, inertial axes) applied at a particle, a material point
+    of a rigid body, or a geometric point.
 
-    ``at`` is a :class:`Particle` or a position (1–3 expressions in the coordinates and t). The vector
-    may depend on t, the coordinates and the velocities (Lorentz force, drag). Its generalized force is
-    Wells (4.10), ``F_q = F · ∂r/∂q`` with t frozen.
+    The vector may depend on t, the coordinates and the velocities (Lorentz force, drag, friction).
+
+    Parameters
+    ----------
+    at : Particle, MaterialPoint, or a position (1–3 expressions in the coordinates and t)
+        Where the force acts:
+
+        * a :class:`Particle` — on the particle;
+        * a :class:`~lagrange.model.material_point.MaterialPoint` (``body.point(r_body)``,
+          ``body.point_at(position)``) — **on the rigid body**, at its material point there;
+        * a position expression — at that *geometric* point (Wells 4.10).
+    vector : 1–3 expressions
+    name : optional label used in messages
+    body : RigidBody, optional
+        Apply the force to this body at its material point that is at the position ``at`` now; the same as
+        ``at=body.point_at(at)``.
+
+    Notes
+    -----
+    The generalized force is :math:`F_{q_k} = F\cdot\partial v_P/\partial\dot q_k` with ``v_P`` the
+    velocity of the point of application. For a particle or a geometric point ``v_P = ṙ`` and this is Wells
+    (4.10), ``F_q = F · ∂r/∂q`` with t frozen. For a material point ``v_P = v_O + ω × r_OP`` (the body's
+    velocity field, :mod:`lagrange.model.material_point`).
+
+    **A force on a body acts at a material point of that body; a position expression is a geometric
+    point.** The two agree when the position is fixed in the body (``body.point`` with constant body
+    coordinates, the centre of mass), and differ when it is not: the contact point of a rolling wheel written
+    as ``centre − r n`` slides along the ground without the wheel's spin, so a force there given by its
+    position alone loses the spin part of its virtual work. Give such a force with ``body=`` or at
+    ``body.point_at(...)``.
+
+    Raises
+    ------
+    DeclarationError
+        ``body`` is not a rigid body, ``at`` is a material point of another body or a particle while
+        ``body`` is given.
     """
 
-    at: sp.Matrix
+    at: sp.Matrix | MaterialPoint
     vector: sp.Matrix
     name: str = ""
 
-    def __init__(self, at, vector, name: str = ""):
-        point = at.position if isinstance(at, Particle) else as_vector(at, "point of application")
+    def __init__(self, at, vector, name: str = "", body: RigidBody | None = None):
+        from .material_point import MaterialPoint
+
+        label = name or "force"
+        if body is not None:
+            from .rigid_body import RigidBody
+
+            if not isinstance(body, RigidBody):
+                raise DeclarationError(f"{label}: body={body!r} is not a RigidBody (a force on a particle is "
+                                       "Force(particle, vector))")
+            if isinstance(at, Particle):
+                raise DeclarationError(f"{label}: at= is particle {at.name!r} and body= is {body.name!r}; a force "
+                                       "acts on one of them: drop body= or give the position")
+            if isinstance(at, MaterialPoint):
+                if at.body is not body:
+                    raise DeclarationError(f"{label}: at= is a material point of rigid body {at.body.name!r} but "
+                                           f"body= is {body.name!r}")
+            else:
+                at = body.point_at(as_vector(at, f"point of application of {label}"))
+        if isinstance(at, MaterialPoint):
+            point = at
+        elif isinstance(at, Particle):
+            point = at.position
+        else:
+            point = as_vector(at, "point of application")
         object.__setattr__(self, "at", point)
         object.__setattr__(self, "vector", as_vector(vector, f"force {name!r}"))
         object.__setattr__(self, "name", name)
+
+    @property
+    def body(self):
+        """The rigid body the force acts on (None for a particle or a geometric point)."""
+        from .material_point import MaterialPoint
+
+        return self.at.body if isinstance(self.at, MaterialPoint) else None
+
+    @property
+    def position(self) -> sp.Matrix:
+        """Where the force acts now (inertial position)."""
+        return as_vector(self.at, "point of application")

@@ -410,7 +410,8 @@ def _substitute_forces(forces, presc):
         if isinstance(item, Mapping):
             out.append({k: sub(v) for k, v in item.items()})
         elif isinstance(item, Force):
-            out.append(Force(item.at.subs(presc).doit(), item.vector.subs(presc).doit(), item.name))
+            at = item.at.subs(presc) if item.body is not None else item.at.subs(presc).doit()
+            out.append(Force(at, item.vector.subs(presc).doit(), item.name))
         elif type(item).__name__ == "Torque":
             out.append(type(item)(item.body.subs(presc), item.vector.subs(presc).doit(), item.frame))
         else:
