@@ -23,12 +23,11 @@ from .errors import (
     SymbolicTimeoutError,
 )
 from .gauss.check import GaussCheck, check_gauss
-from .model.bodies import Force, Particle
+from .model.bodies import Force, MaterialPoint, Particle
 from .model.constraints import Differential, Holonomic, IntegrableConstraintWarning, Nonholonomic, Rough
 from .model.coordinates import coordinates, delta, parameters
 from .model.eliminate import eliminate
 from .model.inertia import Inertia
-from .model.material_point import MaterialPoint
 from .model.rigid_body import RigidBody, Torque
 from .model.rotations import EulerAngles, Quaternion, rot_x, rot_y, rot_z
 from .model.system import System

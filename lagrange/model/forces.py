@@ -10,7 +10,7 @@ r"""Generalized forces from the three forms Wells uses.
    At a material point P of a rigid body (``body.point(r)``, ``body.point_at(position)``, or
    ``Force(..., body=B)``) the same virtual work comes from the body's velocity field,
    :math:`F_{q_r} = F\cdot\partial v_P/\partial\dot q_r` with :math:`v_P = v_O + \omega\times r_{OP}`
-   (:mod:`lagrange.model.material_point`); the two coincide for a point fixed in the body. Over all the
+   (:class:`~lagrange.model.bodies.MaterialPoint`); the two coincide for a point fixed in the body. Over all the
    coordinates, constrained ones included: the multipliers carry the constraints (Wells ch. 12).
 3. Torques on rigid bodies (:class:`~lagrange.model.rigid_body.Torque`), ``F_q = τ·∂ω/∂q̇`` (Wells 8.12).
 4. A virtual-work expression :math:`\delta W = \sum_r F_{q_r}\,\delta q_r` (Wells 4.12) written with
@@ -26,7 +26,7 @@ from collections.abc import Mapping, Sequence
 import sympy as sp
 
 from ..conventions import t
-from .bodies import Force
+from .bodies import Force, MaterialPoint
 from .coordinates import (
     coordinate_name,
     is_coordinate,
@@ -34,7 +34,6 @@ from .coordinates import (
     to_symbols,
     virtual_displacement,
 )
-from .material_point import MaterialPoint
 
 __all__ = ["generalized_forces"]
 

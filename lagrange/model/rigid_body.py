@@ -12,7 +12,7 @@ positive products, :mod:`lagrange.model.inertia`), ω and v₀ along the body ax
 The last term vanishes when O is the centre of mass; the first and last when O is fixed. A torque τ on
 the body (along the body axes, or the inertial axes with ``frame="inertial"``) has the generalized force
 ``F_q = τ · ∂ω/∂q̇`` (Wells 8.12); a force on the body is a :class:`~lagrange.Force` at one of its material
-points, ``body.point(r_body)`` or ``body.point_at(position)`` (:mod:`lagrange.model.material_point`:
+points, ``body.point(r_body)`` or ``body.point_at(position)`` (:class:`~lagrange.model.bodies.MaterialPoint`:
 ``F_q = F · ∂v_P/∂q̇`` with the body's velocity field ``v_P = v_O + ω × r_OP``).
 """
 
@@ -24,10 +24,9 @@ from functools import cached_property
 
 import sympy as sp
 
-from .bodies import as_vector
+from .bodies import MaterialPoint, as_vector
 from .coordinates import time_derivative
 from .inertia import Inertia
-from .material_point import MaterialPoint
 from .rotations import EulerAngles, Quaternion, _compact, as_rotation, body_angular_velocity
 
 __all__ = ["RigidBody", "Torque"]
@@ -91,7 +90,7 @@ class RigidBody:
         """The material point of the body with body coordinates ``r_body`` (relative to O, along the body
         axes; they may depend on the coordinates and t — then a different material point at each instant).
 
-        A force at it acts on the body (``F_q = F · ∂v_P/∂q̇``, :mod:`lagrange.model.material_point`); its
+        A force at it acts on the body (``F_q = F · ∂v_P/∂q̇``, :class:`~lagrange.model.bodies.MaterialPoint`); its
         inertial position is ``.position`` (``O + R r_body``), its velocity ``.velocity``.
         """
         return MaterialPoint(self, r_body)

@@ -19,7 +19,7 @@ from sympy.core.function import AppliedUndef
 
 from ..conventions import VELOCITY_SUFFIX, t
 from ..errors import DeclarationError
-from .bodies import Body
+from .bodies import Body, Force
 from .constraints import Differential, Holonomic, Nonholonomic, normalize_constraints
 from .coordinates import coordinate_name, is_coordinate, virtual_displacement
 from .forces import generalized_forces
@@ -396,8 +396,6 @@ def _substitute_constraint(c, presc):
 
 
 def _substitute_forces(forces, presc):
-    from .bodies import Force
-
     # a prescribed coordinate has no virtual displacement: with t frozen, δs = 0 (Wells Ex. 4.9)
     frozen = {virtual_displacement(k): 0 for k in presc}
 
