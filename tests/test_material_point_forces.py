@@ -232,8 +232,9 @@ def test_braked_rolling_wheel_newton_euler(kind):
     contact = (x, 0, 0)
     brake = Torque(wheel, (0, -tau_b, 0), frame="inertial")
     vals = {m: 2.0, I: 0.09, r: 0.3, tau_b: 0.5, F_t: 1.7}
-    material = System([x, ph], bodies=[wheel], forces=[Force(contact, (F_t, 0, 0), body=wheel), brake],
-                      constraints=[roll]).compile(vals)
+    material_system = System([x, ph], bodies=[wheel], forces=[Force(contact, (F_t, 0, 0), body=wheel), brake],
+                             constraints=[roll])
+    material = material_system.compile(vals)
     geometric = System([x, ph], bodies=[wheel], forces=[Force(contact, (F_t, 0, 0)), brake],
                        constraints=[roll]).compile(vals)
     phdd = -0.5 / (0.09 + 2.0 * 0.3**2)
@@ -243,6 +244,11 @@ def test_braked_rolling_wheel_newton_euler(kind):
         _close(qdd, [0.3 * phdd, phdd])
         _close(material.multipliers(0.0, y), [2.0 * qdd[0] - 1.7])
         assert _rel_diff(geometric.fun(0.0, y)[2:], qdd) > 0.1
+    if kind == "holonomic":  # x eliminated: the contact force's F_φ = F_x r + F_φ = F_t r − r F_t = 0
+        reduced = lg.eliminate(material_system, {x: r * ph})
+        assert sp.simplify(reduced.generalized_forces()[ph] + tau_b) == 0
+        assert F_t not in reduced.parameters
+        _close(reduced.compile({k: v for k, v in vals.items() if k != F_t}).fun(0.0, np.array([0.2, 1.3]))[1:], [phdd])
 
 
 # ---------------------------------------------------------------------------------------------------------
