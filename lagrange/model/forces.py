@@ -34,6 +34,7 @@ from .coordinates import (
     to_symbols,
     virtual_displacement,
 )
+from .rigid_body import Torque
 
 __all__ = ["generalized_forces"]
 
@@ -81,8 +82,6 @@ def _from_virtual_work(expr, coords: Sequence, problems: list) -> dict:
 
 
 def _is_torque(item) -> bool:
-    from .rigid_body import Torque
-
     return isinstance(item, Torque)
 
 
