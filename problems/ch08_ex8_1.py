@@ -22,7 +22,7 @@ system = System([psi, phi], bodies=[body], name="body on an inclined shaft in a 
 
 def body_velocity(point):
     """Velocity of a body point along the instantaneous body axes: Rᵀ d/dt(inertial position)."""
-    return body.R.T * body.point(point).diff(t)
+    return body.R.T * body.point(point).position.diff(t)
 
 
 def fixed_axis_omega(_):

@@ -7,6 +7,11 @@ r"""Generalized forces from the three forms Wells uses.
              + F_{y_i}\frac{\partial y_i}{\partial q_r} + F_{z_i}\frac{\partial z_i}{\partial q_r}\Big)
 
    with t and the other coordinates held fixed.
+   At a material point P of a rigid body (``body.point(r)``, ``body.point_at(position)``, or
+   ``Force(..., body=B)``) the same virtual work comes from the body's velocity field,
+   :math:`F_{q_r} = F\cdot\partial v_P/\partial\dot q_r` with :math:`v_P = v_O + \omega\times r_{OP}`
+   (:class:`~lagrange.model.bodies.MaterialPoint`); the two coincide for a point fixed in the body. Over all the
+   coordinates, constrained ones included: the multipliers carry the constraints (Wells ch. 12).
 3. Torques on rigid bodies (:class:`~lagrange.model.rigid_body.Torque`), ``F_q = τ·∂ω/∂q̇`` (Wells 8.12).
 4. A virtual-work expression :math:`\delta W = \sum_r F_{q_r}\,\delta q_r` (Wells 4.12) written with
    :func:`~lagrange.model.coordinates.delta` or the ``delta_q`` symbols: the coefficients are the F_q.
@@ -21,7 +26,7 @@ from collections.abc import Mapping, Sequence
 import sympy as sp
 
 from ..conventions import t
-from .bodies import Force
+from .bodies import Force, MaterialPoint
 from .coordinates import (
     coordinate_name,
     is_coordinate,
@@ -29,11 +34,15 @@ from .coordinates import (
     to_symbols,
     virtual_displacement,
 )
+from .rigid_body import Torque
 
 __all__ = ["generalized_forces"]
 
 
 def _from_force(force: Force, coords: Sequence) -> dict:
+    if isinstance(force.at, MaterialPoint):
+        # on a rigid body: F · ∂v_P/∂q̇ with the body's velocity field (Kane's partial velocities)
+        return {q: (force.vector.T * dv)[0, 0] for q, dv in force.at.partial_velocities(coords).items()}
     if force.at.atoms(sp.Derivative):
         label = force.name or tuple(force.vector)
         raise ValueError(f"the point of application of force {label} contains velocities")
@@ -73,8 +82,6 @@ def _from_virtual_work(expr, coords: Sequence, problems: list) -> dict:
 
 
 def _is_torque(item) -> bool:
-    from .rigid_body import Torque
-
     return isinstance(item, Torque)
 
 

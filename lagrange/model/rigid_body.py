@@ -11,8 +11,9 @@ positive products, :mod:`lagrange.model.inertia`), ω and v₀ along the body ax
 
 The last term vanishes when O is the centre of mass; the first and last when O is fixed. A torque τ on
 the body (along the body axes, or the inertial axes with ``frame="inertial"``) has the generalized force
-``F_q = τ · ∂ω/∂q̇`` (Wells 8.12); a force at a body point is an ordinary :class:`~lagrange.Force` at
-``body.point(r_body)``.
+``F_q = τ · ∂ω/∂q̇`` (Wells 8.12); a force on the body is a :class:`~lagrange.Force` at one of its material
+points, ``body.point(r_body)`` or ``body.point_at(position)`` (:class:`~lagrange.model.bodies.MaterialPoint`:
+``F_q = F · ∂v_P/∂q̇`` with the body's velocity field ``v_P = v_O + ω × r_OP``).
 """
 
 from __future__ import annotations
@@ -23,10 +24,10 @@ from functools import cached_property
 
 import sympy as sp
 
-from .bodies import as_vector
+from .bodies import MaterialPoint, as_vector
 from .coordinates import normalize_time, time_derivative
 from .inertia import Inertia
-from .rotations import EulerAngles, Quaternion, RotationSequence, as_rotation, body_angular_velocity
+from .rotations import EulerAngles, Quaternion, RotationSequence, _compact, as_rotation, body_angular_velocity
 
 __all__ = ["RigidBody", "Torque"]
 
@@ -91,14 +92,29 @@ class RigidBody:
             return self.orientation.space_angular_velocity()
         return self.R * self.angular_velocity
 
-    def point(self, r_body) -> sp.Matrix:
-        """Inertial position of the body point with body coordinates ``r_body`` relative to O."""
-        return self.origin + self.R * as_vector(r_body, "body point")
+    def point(self, r_body) -> MaterialPoint:
+        """The material point of the body with body coordinates ``r_body`` (relative to O, along the body
+        axes; they may depend on the coordinates and t — then a different material point at each instant).
+
+        A force at it acts on the body (``F_q = F · ∂v_P/∂q̇``, :class:`~lagrange.model.bodies.MaterialPoint`); its
+        inertial position is ``.position`` (``O + R r_body``), its velocity ``.velocity``.
+        """
+        return MaterialPoint(self, r_body)
+
+    def point_at(self, position) -> MaterialPoint:
+        """The material point of the body that is at the inertial ``position`` (1–3 expressions in the
+        coordinates and t) now: ``r_body = Rᵀ (position − O)``.
+
+        Use it for a point located geometrically, e.g. the contact point ``centre − r n`` of a rolling
+        wheel; a force there acts on the body with the body's velocity field.
+        """
+        d = as_vector(position, f"position of a point of rigid body {self.name!r}") - self.origin
+        return MaterialPoint(self, (self.R.T * d).applyfunc(_compact))
 
     @property
     def centre_of_mass(self) -> sp.Matrix:
         """Inertial position of the centre of mass."""
-        return self.point(self.com)
+        return self.origin + self.R * self.com
 
     # --- energy ---------------------------------------------------------------------------------
     def kinetic_energy(self) -> sp.Expr:

@@ -21,7 +21,7 @@ from sympy.core.function import AppliedUndef
 from ..conventions import VELOCITY_SUFFIX, t
 from ..conventions import t as _TIME
 from ..errors import DeclarationError
-from .bodies import Body
+from .bodies import Body, Force
 from .constraints import Differential, Holonomic, Nonholonomic, normalize_constraints
 from .coordinates import coordinate_name, is_coordinate, normalize_time, virtual_displacement
 from .forces import generalized_forces
@@ -600,8 +600,6 @@ def _substitute_constraint(c, presc):
 
 
 def _substitute_forces(forces, presc):
-    from .bodies import Force
-
     # a prescribed coordinate has no virtual displacement: with t frozen, δs = 0 (Wells Ex. 4.9)
     frozen = {virtual_displacement(k): 0 for k in presc}
 
@@ -614,7 +612,8 @@ def _substitute_forces(forces, presc):
         if isinstance(item, Mapping):
             out.append({k: sub(v) for k, v in item.items()})
         elif isinstance(item, Force):
-            out.append(Force(item.at.subs(presc).doit(), item.vector.subs(presc).doit(), item.name))
+            at = item.at.subs(presc) if item.body is not None else item.at.subs(presc).doit()
+            out.append(Force(at, item.vector.subs(presc).doit(), item.name))
         elif type(item).__name__ == "Torque":
             out.append(type(item)(item.body.subs(presc), item.vector.subs(presc).doit(), item.frame))
         else:
