@@ -567,6 +567,10 @@ def _cmd_modes(args) -> int:
         if lin.a.shape[0] <= 3 and all(v == 0 for v in lin.b) and lin.a.det() != 0:
             print(f"frequency equation |a w^2 - c| = 0:\n{pretty(sp_factor(lin.frequency_equation()))} = 0")
     if not numeric:
+        missing = [n for n in names if n not in params]
+        if constrained and eqs.n > 4:  # the symbolic route would take long on a big constrained system
+            raise SpecError(f"give --param values for {', '.join(missing)}: a constrained system with {eqs.n} "
+                            "coordinates is linearized numerically")
         if constrained:
             lin = linearize(system, about)
             _print_constrained(lin, pretty)
@@ -577,7 +581,6 @@ def _cmd_modes(args) -> int:
                 raise SpecError(f"the reference state ({shown}) is not an equilibrium: q'' (or F) = {residual} there; "
                                 "choose an equilibrium (see `lagrange.equilibria`) or pass --force")
             print(f"warning: not an equilibrium: q'' (or F) = {residual}; linearized anyway (--force)")
-        missing = [n for n in names if n not in params]
         print(f"(give --param values for {', '.join(missing)} to get numbers)")
         return 0
     lin = linearize(system, about, params=params)
