@@ -480,7 +480,31 @@ def characteristic_roots(linear, params: Mapping | None = None, **kwargs) -> np.
     ``linear`` is a :class:`LinearModel` or a System, linearized numerically with ``params`` and the
     keywords of :func:`linearize` (e.g. ``characteristic_roots(bicycle, about={...}, params={...})``; the
     derivatives are generated once per system and reused for every operating point). A constrained system
-    has ``len(states)`` roots, on the manifold."""
+    has ``len(states)`` roots, on the manifold.
+
+    Exact zero roots are deflated before the eigen-solver runs: a state whose row or column of 𝒜 vanishes (an
+    ignorable coordinate, a conserved speed — e.g. a bicycle's position, heading, wheel angles and forward
+    speed) contributes a root 0 exactly, and the remaining roots are those of 𝒜 without that state (block
+    triangular form). Left in, such zeros often form Jordan chains, which the solver returns as ±√eps
+    (~1e-8) and which then hide a small physical root such as a capsize mode at its critical speed."""
     linear = _linear(linear, params, kwargs)
     A, _ = linear.numeric_state(params)
-    return np.sort_complex(np.linalg.eigvals(A)) if A.size else np.zeros(0, dtype=complex)
+    return _roots_deflated(np.asarray(A))
+
+
+def _roots_deflated(A: np.ndarray) -> np.ndarray:
+    """Eigenvalues of A, zero rows/columns (to 1e-14 of the largest entry) split off exactly as roots 0."""
+    if not A.size:
+        return np.zeros(0, dtype=complex)
+    tol = 1e-14 * float(np.max(np.abs(A))) if np.any(A) else 0.0
+    keep = np.arange(A.shape[0])
+    zeros = 0
+    while keep.size:
+        sub = np.abs(A[np.ix_(keep, keep)])
+        empty = np.flatnonzero((sub.max(axis=0) <= tol) | (sub.max(axis=1) <= tol))
+        if not empty.size:
+            break
+        keep = np.delete(keep, empty[0])
+        zeros += 1
+    rest = np.linalg.eigvals(A[np.ix_(keep, keep)]) if keep.size else np.zeros(0, dtype=complex)
+    return np.sort_complex(np.concatenate([rest.astype(complex), np.zeros(zeros, dtype=complex)]))

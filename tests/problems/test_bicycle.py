@@ -3,9 +3,8 @@ capsize speeds, and the nonlinear model's self-stability.
 
 Truth is the published benchmark (values in ``lagrange_problems.bench_bicycle.PUBLISHED``). The linearization
 here is our own (``lean_steer_matrix``: central differences with a Richardson step of the compiled constrained
-dynamics, on the constraint manifold), independent of ``lagrange.characteristic_roots``; the one test that uses
-that API (``test_characteristic_roots_api``) needs the constrained linearization of the ``analysis`` branch and
-fails until it is merged.
+dynamics, on the constraint manifold), independent of ``lagrange.characteristic_roots``; ``test_characteristic_roots_api`` checks the same
+published numbers through that public API (exact complex-step Jacobians on the constraint manifold).
 
 Deriving and compiling the model takes tens of seconds, so every test that needs it is marked slow and shares
 one compiled model per session.
@@ -169,15 +168,32 @@ def test_nonlinear_run_is_self_stable_at_5_and_weaves_away_at_3(model):
     assert late > 3 * early, f"at 3 m/s the weave should grow: {early:.3g} -> {late:.3g}"
 
 
+def _api_roots(system, speed):
+    """The four lean/steer roots: every root but the structural zeros (ignorable coordinates, forward speed),
+    which characteristic_roots deflates exactly — so they are exact zeros even at the capsize speed, where the
+    capsize root itself crosses zero."""
+    about = bike.operating_point(speed, bike.BENCHMARK)
+    roots = np.asarray(lg.characteristic_roots(system, about=about, params=bike.PARAMS), dtype=complex)
+    assert np.count_nonzero(roots == 0) == len(roots) - 4  # exact structural zeros, four lean/steer roots
+    return _sorted(roots[roots != 0])
+
+
 @pytest.mark.slow
 def test_characteristic_roots_api(model):
-    """Needs lagrange.characteristic_roots on constrained systems (branch ``analysis``): fails until merged.
-    Compares the nonzero roots of the reduced model with Table 2 at 5 m/s; the zero roots belong to the
-    ignorable coordinates and the forward-speed mode."""
-    about = bike.operating_point(5.0, bike.BENCHMARK)
-    roots = np.asarray(lg.characteristic_roots(bike.PROBLEM.system.build(), about=about, params=bike.PARAMS),
-                       dtype=complex)
-    nonzero = _sorted(roots[np.abs(roots) > 1e-6])
-    want = _sorted(PUB["eigenvalues"][5])
-    assert nonzero.shape == want.shape
-    np.testing.assert_allclose(nonzero, want, rtol=1e-10, atol=1e-10)
+    """The public API (lagrange.characteristic_roots on the constraint manifold, the independent coordinates
+    and speeds chosen by the library) against Table 2 at every tabulated speed, and the weave and capsize
+    speeds from its roots; the zero roots belong to the ignorable coordinates and the forward-speed mode."""
+    system = bike.PROBLEM.system.build()
+    for speed, published in PUB["eigenvalues"].items():
+        nonzero, want = _api_roots(system, float(speed)), _sorted(published)
+        assert nonzero.shape == want.shape, f"v = {speed}: {nonzero}"
+        rel = np.max(np.abs(nonzero - want) / np.maximum(np.abs(want), 1.0))
+        assert rel < 1e-10, f"v = {speed}: {nonzero} against Table 2 {want}"
+
+    def abscissa(speed):
+        return float(np.max(_api_roots(system, speed).real))
+
+    weave = brentq(abscissa, 4.0, 5.0, xtol=1e-13)
+    capsize = brentq(abscissa, 5.5, 6.5, xtol=1e-13)
+    assert abs(weave - PUB["weave_speed"]) < 1e-10 * PUB["weave_speed"]
+    assert abs(capsize - PUB["capsize_speed"]) < 1e-10 * PUB["capsize_speed"]
