@@ -3,8 +3,9 @@ capsize speeds, and the nonlinear model's self-stability.
 
 Truth is the published benchmark (values in ``lagrange_problems.bench_bicycle.PUBLISHED``). The linearization
 here is our own (``lean_steer_matrix``: central differences with a Richardson step of the compiled constrained
-dynamics, on the constraint manifold), independent of ``lagrange.characteristic_roots``; ``test_characteristic_roots_api`` checks the same
-published numbers through that public API (exact complex-step Jacobians on the constraint manifold).
+dynamics, on the constraint manifold), independent of ``lagrange.characteristic_roots``;
+``test_characteristic_roots_api`` checks the same published numbers through that public API (exact
+complex-step Jacobians on the constraint manifold).
 
 Deriving and compiling the model takes tens of seconds, so every test that needs it is marked slow and shares
 one compiled model per session.
