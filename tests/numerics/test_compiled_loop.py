@@ -190,7 +190,7 @@ def test_missing_numba_is_a_clear_error(oscillator, monkeypatch):
 
     s, model, p, ic = oscillator
     monkeypatch.setattr(compiled, "_numba_available", lambda: False)
-    with pytest.raises(BackendError, match=r"lagrange\[fast\]"):
+    with pytest.raises(BackendError, match=r"lagrange-dynamics\[fast\]"):
         s.simulate(1, ic, p, loop="compiled")
 
 

@@ -141,7 +141,7 @@ def test_declaration_errors(tmp_path):
 
 def test_missing_pandas_names_the_extra(monkeypatch):
     monkeypatch.setitem(sys.modules, "pandas", None)
-    with pytest.raises(SweepError, match=r"lagrange\[sweep\]"):
+    with pytest.raises(SweepError, match=r"lagrange-dynamics\[sweep\]"):
         lg.sweep(OSC, {"k": [1.0]}, workers=0, **BASE)
 
 
