@@ -10,9 +10,10 @@ line ``"name": ".submodule"`` to :data:`_EXPORTS` and the name to ``__all__``.
 
 from __future__ import annotations
 
-import importlib
 import sys
 import types
+
+from ._lazy import lazy_exports
 
 __version__ = "0.1.0"
 
@@ -86,20 +87,6 @@ _EXPORTS: dict[str, str] = {
     "inputs": ".model.inputs",
 }
 
-
-def __getattr__(name: str):
-    """Import the submodule defining ``name`` on first use and cache the value (PEP 562)."""
-    try:
-        module = _EXPORTS[name]
-    except KeyError:
-        raise AttributeError(f"module 'lagrange' has no attribute {name!r}") from None
-    value = getattr(importlib.import_module(module, __name__), name)
-    globals()[name] = value
-    return value
-
-
-def __dir__() -> list[str]:
-    return sorted(set(globals()) | set(__all__))
 
 
 class _Package(types.ModuleType):
@@ -183,3 +170,5 @@ __all__ = [
     "LagrangeWarning",
     "UnusedParameterWarning",
 ]
+
+__getattr__, __dir__ = lazy_exports(__name__, _EXPORTS, __all__)

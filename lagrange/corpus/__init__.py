@@ -6,7 +6,7 @@ loads without sympy; one line ``"name": ".submodule"`` in :data:`_EXPORTS` per p
 
 from __future__ import annotations
 
-import importlib
+from .._lazy import lazy_exports
 
 #: public name -> the submodule that defines it (imported on first use)
 _EXPORTS: dict[str, str] = {
@@ -34,19 +34,6 @@ _EXPORTS: dict[str, str] = {
 }
 
 
-def __getattr__(name: str):
-    try:
-        module = _EXPORTS[name]
-    except KeyError:
-        raise AttributeError(f"module {__name__!r} has no attribute {name!r}") from None
-    value = getattr(importlib.import_module(module, __name__), name)
-    globals()[name] = value
-    return value
-
-
-def __dir__() -> list[str]:
-    return sorted(set(globals()) | set(__all__))
-
 
 __all__ = [
     "Answer",
@@ -71,3 +58,5 @@ __all__ = [
     "get_problem",
     "problem_ids",
 ]
+
+__getattr__, __dir__ = lazy_exports(__name__, _EXPORTS, __all__)
