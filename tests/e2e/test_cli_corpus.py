@@ -5,7 +5,10 @@ import pytest
 from lagrange.cli import main
 from lagrange.corpus import all_problems
 
-PROBLEMS = all_problems()
+#: problems tagged "slow" (the Whipple bicycle: ~30,000-operation equations) have dedicated tests of their own
+#: (tests/problems/test_bicycle.py, `lagrange modes bicycle`); printing their full equations through `derive`
+#: is not bounded yet (see the closing note of session 9), so they are left out of these corpus-wide loops
+PROBLEMS = [p for p in all_problems() if "slow" not in p.tags]
 DYNAMIC = [p for p in PROBLEMS if p.simulation is not None]
 
 

@@ -14,7 +14,9 @@ import pytest
 from lagrange.corpus import all_problems, get_problem
 from lagrange.gauss.check import check_problem, sample_parameters
 
-PROBLEMS = [p for p in all_problems() if p.system is not None]
+#: problems tagged "slow" (the Whipple bicycle) are checked by their own tests; Gauss' symbolic check of four
+#: rolling rigid bodies is not bounded yet, so they are left out here
+PROBLEMS = [p for p in all_problems() if p.system is not None and "slow" not in p.tags]
 
 # particle (ex3.4), dry friction sign() (ex6.1), rotating axes (p3.6), superfluous coordinates with a
 # multiplier (sec1.9-multipliers), free two-body (p2.16-multipliers), lamina with I_z only (ex8.5, signed
