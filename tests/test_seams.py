@@ -133,11 +133,15 @@ def test_integral_without_closed_form_is_refused_at_declaration(tmp_path):
         load_spec(str(spec))
 
 
-@pytest.mark.slow
-@pytest.mark.xfail(strict=False, reason="in the final CI run (installed package, two xdist workers) no "
-                   "DeclarationError was raised; not yet diagnosed (session 9 closing note)")
-def test_dry_friction_over_a_rod_is_refused_wells_p6_25():
-    """Wells Prob. 6.25: P = −f ∫₀ˡ |v(r)| dr; sympy finds no closed form, so it is refused by name."""
+def test_dry_friction_over_a_rod_is_refused_wells_p6_25(monkeypatch):
+    """Wells Prob. 6.25: P = −f ∫₀ˡ |v(r)| dr is refused by name when sympy does not evaluate it within the budget.
+
+    sympy does find a closed form (a Piecewise with asinh), but only after ~25 s on this machine, beyond the
+    per-attempt budget :data:`lagrange.model.integrals.SECONDS`. A fast idle machine once finished it within the
+    four 3-s attempts (sympy's cache carried work from one attempt to the next), so the test fixes a small budget."""
+    import lagrange.model.integrals as integrals
+
+    monkeypatch.setattr(integrals, "SECONDS", 0.2)
     x, y, th, m, I, a, b, al = _board()
     f, l = lg.parameters("f l")
     r = sp.Symbol("r", real=True)

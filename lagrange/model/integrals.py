@@ -3,8 +3,9 @@ r"""Integrals in a declaration (distributed drag or friction over a rod or plate
 Wells writes the power function or the generalized forces of a distributed resistance as an integral over the
 body, e.g. a plate in a viscous film (Ex. 6.8), :math:`P = -\tfrac{\alpha}{2}\int\!\!\int v^2\,dA`. A
 ``sympy.Integral`` is accepted in T, V, P, the Rayleigh function and the forces and evaluated **in closed form
-at declaration** (bounded in time). Generated code has no quadrature, so an integral sympy cannot evaluate
-(dry friction over a rod, Prob. 6.25, or a plate) is refused there with a
+at declaration** (bounded in time: :data:`SECONDS` per attempt). Generated code has no quadrature, so an
+integral sympy cannot evaluate within that budget (dry friction over a rod, Prob. 6.25, whose Piecewise/asinh
+closed form takes sympy about 25 s; dry friction over a plate) is refused there with a
 :class:`~lagrange.errors.DeclarationError` naming it — the same for derive, simulate and the CLI, which all
 build the :class:`~lagrange.System` first. Give its closed form, or approximate the body by point contacts
 (Wells Prob. 6.14 does this for the ring of Prob. 6.15).
