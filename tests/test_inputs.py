@@ -481,3 +481,31 @@ def test_linearize_gives_the_input_matrix_of_declared_inputs_and_its_lqr_gain_st
     sol = s.simulate(12, {x: 0.0, th: 0.2, x.diff(t): 0.0, th.diff(t): 0.0}, p,
                      inputs={u: lambda tt, y: -float(K @ y)})
     assert abs(sol["theta"][-1]) < 1e-3 and abs(sol["x"][-1]) < 1e-2
+
+
+def test_time_varying_input_drives_a_nonholonomic_skate():
+    """Inputs × non-holonomic constraints: a skate (ẏ cosθ − ẋ sinθ = 0) pushed along its blade by
+    F(t) = F0 cos Ωt. With θ̇ = ω constant, the speed along the blade is v = v0 + F0 sin(Ωt)/(mΩ) and the
+    contact point follows x = ∫ v cos ωs ds, y = ∫ v sin ωs ds (evaluated by quadrature as the reference)."""
+    from scipy.integrate import quad
+
+    x, y, th = lg.coordinates("x y theta")
+    m, I = lg.parameters("m I")
+    F = lg.inputs("F")
+    T = m * (x.diff(t) ** 2 + y.diff(t) ** 2) / 2 + I * th.diff(t) ** 2 / 2
+    s = lg.System([x, y, th], T=T, forces={x: F * sp.cos(th), y: F * sp.sin(th)},
+                  constraints=[lg.Nonholonomic(y.diff(t) * sp.cos(th) - x.diff(t) * sp.sin(th), "blade")])
+    mv, v0, w, F0, Om = 2.0, 1.0, 0.7, 0.9, 1.7
+    sol = s.simulate(6, {x: 0, y: 0, th: 0, x.diff(t): v0, y.diff(t): 0, th.diff(t): w}, {"m": mv, "I": 0.4},
+                     inputs={F: lambda tt: F0 * np.cos(Om * tt)}, rtol=1e-11, atol=1e-12)
+
+    def v(s_):
+        return v0 + F0 * np.sin(Om * s_) / (mv * Om)
+
+    for i in range(0, len(sol.t), 37):
+        tt = sol.t[i]
+        assert sol[x][i] == pytest.approx(quad(lambda s_: v(s_) * np.cos(w * s_), 0, tt)[0], abs=1e-7)
+        assert sol[y][i] == pytest.approx(quad(lambda s_: v(s_) * np.sin(w * s_), 0, tt)[0], abs=1e-7)
+    assert np.allclose(sol[th], w * sol.t, atol=1e-8)
+    assert sol.max_constraint_violation() < 1e-8
+    assert np.allclose(sol[F], F0 * np.cos(Om * sol.t))
