@@ -10,6 +10,7 @@ display code lives here, once, and the classes stay about their data:
 :class:`~lagrange.analysis.small_oscillations.Modes`    :func:`modes_html` (ω, period, normalized shapes)
 :class:`~lagrange.analysis.hamilton.HamiltonianForm`    :func:`hamiltonian_latex` (H, canonical equations)
 :class:`~lagrange.sweep.ensemble.EnsembleResult`        :func:`ensemble_html` (members, status, work)
+:class:`~lagrange.analysis.equilibria.Equilibrium`      :func:`equilibrium_latex` (positions, multipliers λ)
 =====================================================  ====================================================
 
 ``sweep()`` returns a pandas DataFrame, which Jupyter already shows as a table. Every string taken from
@@ -28,7 +29,7 @@ from .errors import LagrangeError
 from .model.coordinates import coordinate_name, to_symbols
 
 __all__ = ["html_table", "trajectory_summary", "trajectory_html", "linear_model_latex", "modes_html",
-           "hamiltonian_latex", "ensemble_html"]
+           "hamiltonian_latex", "ensemble_html", "equilibrium_latex"]
 
 
 def html_table(rows: Iterable[Iterable], *, header: Iterable | None = None, caption: str | None = None) -> str:
@@ -125,6 +126,24 @@ def hamiltonian_latex(form) -> str:
         rows.append(rf"\dot{{{sp.latex(q)}}} &= {sp.latex(qd)}")
         rows.append(rf"\dot{{{sp.latex(p)}}} &= {sp.latex(pd)}")
     return r"$\displaystyle \begin{aligned} " + r" \\ ".join(rows) + r" \end{aligned}$"
+
+
+def equilibrium_latex(eq) -> str:
+    r"""An equilibrium as ``q = value`` lines, then the constraint multipliers ``λ_name = value`` when the
+    system is constrained (coordinates printed as symbols, values exact or numeric as found)."""
+    coords = list(eq)
+    rows = [rf"{sp.latex(to_symbols(q, coords))} &= {sp.latex(to_symbols(sp.sympify(v), coords))}"
+            for q, v in eq.items()]
+    rows += [rf"\lambda_{{\text{{{_latex_text(name)}}}}} &= {sp.latex(to_symbols(sp.sympify(v), coords))}"
+             for name, v in eq.multipliers.items()]
+    return r"$\displaystyle \begin{aligned} " + r" \\ ".join(rows) + r" \end{aligned}$"
+
+
+def _latex_text(name: str) -> str:
+    """A user's name for ``\\text{…}``: LaTeX's special characters escaped."""
+    special = {"\\": r"\textbackslash{}", "{": r"\{", "}": r"\}", "$": r"\$", "&": r"\&", "#": r"\#",
+               "_": r"\_", "%": r"\%", "^": r"\^{}", "~": r"\~{}"}
+    return "".join(special.get(c, c) for c in str(name))
 
 
 def ensemble_html(result) -> str:

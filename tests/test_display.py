@@ -150,3 +150,19 @@ def test_missing_numba_names_the_extra(monkeypatch):
         loop_backend("compiled", backend="auto", model=None)
     with pytest.raises(BackendError, match=r'pip install "lagrange-dynamics\[fast\]"'):
         cache_key("source")
+
+
+def test_equilibrium_latex_names_positions_and_multipliers():
+    """A constrained equilibrium shows its positions and λ by constraint name (a name with LaTeX specials is
+    escaped); the values are those the analysis found (Cartesian pendulum: y = −l, λ = −m g)."""
+    from lagrange import equilibria
+
+    x, y = coordinates("x y")
+    m, g, l = parameters("m g l")
+    s = System([x, y], bodies=[Particle(m, (x, y))], V=m * g * y,
+               constraints=[Holonomic(sp.sqrt(x**2 + y**2) - l, "rod_1&2")])
+    bottom = next(e for e in equilibria(s) if e[y] == -l)
+    text = bottom._repr_latex_()
+    assert text.startswith("$") and text.endswith("$")
+    assert "y &= - l" in text and "x &= 0" in text
+    assert r"\lambda_{\text{rod\_1\&2}} &= - g m" in text

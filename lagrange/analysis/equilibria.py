@@ -38,6 +38,11 @@ class Equilibrium(dict):
         extra = f", multipliers={self.multipliers}" if self.multipliers else ""
         return f"Equilibrium({dict.__repr__(self)}{extra})"
 
+    def _repr_latex_(self) -> str:
+        from ..display import equilibrium_latex
+
+        return equilibrium_latex(self)
+
 
 def _conditions(system) -> tuple[list, list]:
     """The equilibrium conditions (in symbols) and the unknowns (positions, then multipliers)."""
