@@ -89,8 +89,27 @@ def _entries():
     def linearize_about(s, v):
         lg.linearize(s, {"x": v})
 
+    def equilibria_params(s, v):
+        lg.equilibria(s, {"m": 1.0, "k": v})
+
+    def modes_params(s, v):
+        lg.normal_modes(s, {"m": 1.0, "k": v})
+
+    def declared_energy(s, v):
+        lg.System(list(s.coordinates), T=s.T, V=v)
+
+    def declared_force(s, v):
+        lg.System(list(s.coordinates), T=s.T, V=0, forces={s.coordinates[0]: v})
+
+    def declared_constraint(s, v):
+        lg.System(list(s.coordinates), T=s.T, V=0, constraints=[v])
+
+    def particle_mass(s, v):
+        lg.System(list(s.coordinates), bodies=[lg.Particle(v, (s.coordinates[0], 0))], V=0)
+
     return [simulate_params, simulate_initial, compile_params, with_params, symbol_keyed, sweep_grid, sweep_range,
-            sweep_base, linearize_about]
+            sweep_base, linearize_about, equilibria_params, modes_params, declared_energy, declared_force,
+            declared_constraint, particle_mass]
 
 
 ENTRIES = _entries()
