@@ -75,6 +75,7 @@ class _Staged:
 
 
 _STAGED: dict[Path, _Staged] = {}
+_STAMP = 946_684_800  # the staged files' fixed modification time (2000-01-01), so numba's stamp never changes
 _STAGE: dict[str, object] = {}  # "pid": the process that made "dir", the staging directory
 
 
@@ -146,6 +147,7 @@ def write_module(prefix: str, text: str) -> tuple[str, Path]:
         bundle_path = cache_dir() / f"{stem}.numba"
         bundle = read_verified(bundle_path)
         path.write_text(text, encoding="utf-8")
+        os.utime(path, (_STAMP, _STAMP))  # numba < 0.60 stamps its index with the file's (mtime, size)
         try:
             members = _unpack(bundle, stem) if bundle is not None else []
         except (ValueError, UnicodeDecodeError):  # sealed by us yet malformed: rebuild
