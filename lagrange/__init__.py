@@ -78,6 +78,8 @@ _EXPORTS: dict[str, str] = {
     "InputError": ".errors",
     "LagrangeWarning": ".errors",
     "UnusedParameterWarning": ".errors",
+    "CacheError": ".errors",
+    "CacheIntegrityWarning": ".errors",
     "from_mechanics": ".interop.mechanics",
     "to_functions": ".model.coordinates",
     "to_symbols": ".model.coordinates",
@@ -169,6 +171,8 @@ __all__ = [
     "support_loads",
     "LagrangeWarning",
     "UnusedParameterWarning",
+    "CacheError",
+    "CacheIntegrityWarning",
 ]
 
 __getattr__, __dir__ = lazy_exports(__name__, _EXPORTS, __all__)

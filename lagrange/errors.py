@@ -141,3 +141,14 @@ class AnalysisError(LagrangeError, ValueError):
 
 
 __all__ += ["AnalysisError"]
+
+
+class CacheError(LagrangeError, PermissionError):
+    """The cache directory cannot be trusted: owned by another user, writable by group or others, or its
+    secret readable by others (the message names the path and the fix; ``LAGRANGE_CACHE_TRUST=1`` is the
+    explicit opt-out, see :mod:`lagrange.codegen.cache`)."""
+
+
+class CacheIntegrityWarning(LagrangeWarning):
+    """A cache entry failed authentication (planted, copied under another name, edited or damaged): it was
+    ignored and rebuilt, never loaded. Issued once per process."""

@@ -33,6 +33,7 @@ from sympy.core.function import AppliedUndef
 from sympy.core.random import rng as _sympy_rng
 
 from .errors import SymbolicTimeoutError
+from .safe_sympify import sympify as _sympify
 
 __all__ = ["SECONDS", "ATTEMPTS", "run_bounded", "simplify", "trigsimp", "factor", "solve", "is_zero"]
 
@@ -106,7 +107,7 @@ def _or_input(fn, expr, what):
 
 def simplify(expr, *, limit: int | None = None):
     """``sympy.simplify``, bounded: the input is returned unchanged above ``limit`` operations or on timeout."""
-    expr = sp.sympify(expr)
+    expr = _sympify(expr)
     if limit is not None and sp.count_ops(expr) > limit:
         return expr
     return _or_input(sp.simplify, expr, "simplify")
@@ -114,12 +115,12 @@ def simplify(expr, *, limit: int | None = None):
 
 def trigsimp(expr):
     """``sympy.trigsimp``, bounded (the input unchanged on timeout)."""
-    return _or_input(sp.trigsimp, sp.sympify(expr), "trigsimp")
+    return _or_input(sp.trigsimp, _sympify(expr), "trigsimp")
 
 
 def factor(expr):
     """``sympy.factor``, bounded (the input unchanged on timeout)."""
-    return _or_input(sp.factor, sp.sympify(expr), "factor")
+    return _or_input(sp.factor, _sympify(expr), "factor")
 
 
 def solve(*args, what: str = "solve", **kwargs):
@@ -211,7 +212,7 @@ def is_zero(expr, *, limit: int = 300) -> bool:
     of trigonometric polynomials; bounded ``simplify``. Above ``limit`` operations an expression with symbols
     stops after the probe (unproven → False) and a constant skips only ``simplify``.
     """
-    expr = sp.sympify(expr)
+    expr = _sympify(expr)
     if expr == 0:
         return True
     if _probe(expr) is True:

@@ -1,5 +1,7 @@
-"""The on-disk cache of generated numba modules: keyed by everything that affects the code, corrupted or
-truncated entries rebuilt, concurrent writers safe, stale entries never used.
+"""The on-disk cache of generated numba modules: keyed by everything that affects the code, numba's cache
+kept as one sealed bundle per module (lagrange.codegen.numba_backend), damaged bundles rebuilt, concurrent
+writers safe, stale entries never used. The attacks (planted, retagged, edited entries) are in
+tests/test_cache_integrity.py.
 
 ``CACHE_SCENARIOS`` counts the scenarios tested here (the README's guarantees section cites it).
 """
@@ -15,21 +17,27 @@ import pytest
 
 pytest.importorskip("numba")
 
+from lagrange.codegen import cache as lc  # noqa: E402
 from lagrange.codegen import numba_backend as nb  # noqa: E402
+from lagrange.errors import CacheIntegrityWarning  # noqa: E402
 from lagrange.examples import n_link_pendulum  # noqa: E402
 
 Y = np.array([0.3, -0.2, 0.1, 0.4])
-CORRUPTIONS = ("garbage_index", "garbage_data", "truncated_index", "truncated_data", "empty_index")
-MODULE_DAMAGE = ("truncated_module", "garbage_module", "empty_module")
-#: key material, cache hit, numba cache written, 5 numba-cache corruptions, 3 module damages, version bumps
+#: damage done to a module's bundle of numba cache files
+CORRUPTIONS = ("garbage", "truncated", "empty", "bit_flip", "index_swapped")
+#: key material, cache hit, numba cache written and sealed, 5 bundle corruptions, version bumps
 #: (lagrange, numba, numpy, python), source change, concurrent builders, concurrent writers/readers
-CACHE_SCENARIOS = 1 + 1 + 1 + len(CORRUPTIONS) + len(MODULE_DAMAGE) + 4 + 1 + 1 + 1
+CACHE_SCENARIOS = 1 + 1 + 1 + len(CORRUPTIONS) + 4 + 1 + 1 + 1
 
 
 def _forget_loaded_modules() -> None:
-    """Drop generated modules from ``sys.modules``: the next build behaves like a fresh process."""
+    """Drop generated modules from ``sys.modules`` and from this process's staging area, with the numba
+    cache files numba wrote there: the next build behaves like a fresh process."""
     for name in [k for k in sys.modules if k.startswith("lagrange_rhs_")]:
         sys.modules.pop(name)
+    for path in [p for p in nb._STAGED if p.stem.startswith("rhs_")]:
+        nb.purge_numba_cache("", path)
+        nb._STAGED.pop(path)
 
 
 @pytest.fixture(scope="module")
@@ -48,6 +56,7 @@ def cache(tmp_path, monkeypatch, warm):
     """A private copy of the warm cache, as the cache directory of this test."""
     shutil.copytree(warm[0], tmp_path, dirs_exist_ok=True)
     monkeypatch.setenv("LAGRANGE_CACHE_DIR", str(tmp_path))
+    monkeypatch.setattr(lc, "_warned", False)
     _forget_loaded_modules()
     yield tmp_path
     _forget_loaded_modules()
@@ -70,7 +79,8 @@ def _reference():
 
 
 def _rhs_modules(cache) -> list:
-    return sorted(cache.glob("rhs_*.py"))
+    """The sealed numba bundles of generated rhs modules."""
+    return sorted(cache.glob("rhs_*.numba"))
 
 
 def test_cache_key_covers_text_and_versions(monkeypatch):
@@ -91,52 +101,52 @@ def test_cache_key_covers_text_and_versions(monkeypatch):
 
 
 def test_cache_reused(empty_cache):
-    first = _compile().fun(0.0, Y)
+    first = _compile()
+    assert first.dynamics.stats.cache_misses and not first.dynamics.stats.cache_hits
     modules = _rhs_modules(empty_cache)
     assert len(modules) == 1
-    assert list(empty_cache.rglob("*.nbi")) and list(empty_cache.rglob("*.nbc")), "numba wrote no cache"
+    members = [name for name, _ in nb._unpack(lc.read_verified(modules[0]), modules[0].stem)]
+    assert any(n.endswith(".nbi") for n in members) and any(n.endswith(".nbc") for n in members)
+    assert not list(empty_cache.glob("rhs_*.py")) and not (empty_cache / "__pycache__").exists()
     stamp = modules[0].stat().st_mtime_ns
     _forget_loaded_modules()
-    again = _compile().fun(0.0, Y)
-    assert np.array_equal(first, again)
+    again = _compile()
+    assert again.dynamics.stats.cache_hits and not again.dynamics.stats.cache_misses  # loaded, not compiled
+    assert np.array_equal(first.fun(0.0, Y), again.fun(0.0, Y))
     assert _rhs_modules(empty_cache) == modules and modules[0].stat().st_mtime_ns == stamp  # not rewritten
-    assert np.allclose(first, _reference(), rtol=1e-12, atol=1e-12)
+    assert np.allclose(first.fun(0.0, Y), _reference(), rtol=1e-12, atol=1e-12)
 
 
 def _damage(path, how: str) -> None:
     data = path.read_bytes()
-    if how.startswith("garbage"):
+    if how == "garbage":
         path.write_bytes(b"\x80garbage" * 7)
-    elif how.startswith("truncated"):
+    elif how == "truncated":
         path.write_bytes(data[: len(data) // 2])
-    else:
+    elif how == "empty":
         path.write_bytes(b"")
+    elif how == "bit_flip":
+        path.write_bytes(data[:-100] + bytes([data[-100] ^ 1]) + data[-99:])
+    else:  # the bundle's own content, the index of one function put in place of another's
+        head, _, body = data.partition(b"\n")
+        members = nb._unpack(body, path.stem)
+        names = [n for n, _ in members if n.endswith(".nbi")]
+        swapped = {names[0]: dict(members)[names[-1]], names[-1]: dict(members)[names[0]]}
+        path.write_bytes(head + b"\n" + nb._pack_members([(n, swapped.get(n, d)) for n, d in members]))
 
 
-@pytest.mark.parametrize("how", [pytest.param(c, marks=pytest.mark.slow) if c not in ("garbage_index",
-                                  "truncated_data") else c for c in CORRUPTIONS])
-def test_corrupted_numba_cache_rebuilt(cache, warm, how):
-    """A damaged numba index (.nbi) or data file (.nbc) is detected and rebuilt; the result is unchanged."""
-    suffix = ".nbi" if how.endswith("index") else ".nbc"
-    files = list(cache.rglob(f"*{suffix}"))
-    assert files
-    for f in files:
-        _damage(f, how)
-    again = _compile().fun(0.0, Y)
-    assert np.array_equal(warm[1], again)
-    assert len(_rhs_modules(cache)) == 1
-
-
-@pytest.mark.parametrize("how", [pytest.param(c, marks=pytest.mark.slow) if c != "truncated_module" else c
-                                 for c in MODULE_DAMAGE])
-def test_damaged_module_rewritten(cache, warm, how):
-    """A truncated, garbled or empty generated module is detected (its bytes differ from the source) and
-    rewritten before it is imported."""
-    (module,) = _rhs_modules(cache)
-    text = module.read_text()
-    _damage(module, how)
-    again = _compile().fun(0.0, Y)
-    assert np.array_equal(warm[1], again) and module.read_text() == text
+@pytest.mark.parametrize("how", [pytest.param(c, marks=pytest.mark.slow) if c not in ("garbage", "bit_flip")
+                                 else c for c in CORRUPTIONS])
+def test_corrupted_numba_bundle_rebuilt(cache, warm, how):
+    """A damaged bundle of numba's cache fails authentication: it is not unpacked, numba recompiles, the
+    result is unchanged and the bundle is rewritten intact."""
+    (bundle,) = _rhs_modules(cache)
+    _damage(bundle, how)
+    with pytest.warns(CacheIntegrityWarning, match="authentication tag"):
+        model = _compile()
+    assert model.dynamics.stats.cache_misses and not model.dynamics.stats.cache_hits
+    assert np.array_equal(warm[1], model.fun(0.0, Y))
+    assert _rhs_modules(cache) == [bundle] and lc.read_verified(bundle) is not None
 
 
 @pytest.mark.parametrize("target", ["lagrange", pytest.param("numba", marks=pytest.mark.slow),
@@ -154,7 +164,8 @@ def test_version_bump_gives_new_entry(cache, monkeypatch, target):
     modules = _rhs_modules(cache)
     assert len(modules) == 2 and old in modules
     new = next(m for m in modules if m != old)
-    assert model.dynamics.py_func.__globals__["__file__"] == str(new)
+    assert model.dynamics.py_func.__globals__["__file__"].endswith(new.stem + ".py")
+    assert model.dynamics.stats.cache_misses and not model.dynamics.stats.cache_hits
     assert np.allclose(model.fun(0.0, Y), _reference(), rtol=1e-12, atol=1e-12)
 
 
@@ -192,7 +203,7 @@ def _concurrent_builds(cache, n: int, method: str) -> None:
         assert np.allclose(r, ref, rtol=1e-12, atol=1e-12)
     (module,) = _rhs_modules(cache)
     assert not list(cache.glob(".*.tmp"))
-    assert "def rhs(t, y, p):" in module.read_text()
+    assert lc.read_verified(module) is not None
     _forget_loaded_modules()
     assert np.array_equal(_compile().fun(0.0, Y), np.array(results[0]))
 
@@ -214,7 +225,7 @@ def _writer(args):
     path, text, rounds = args
     from pathlib import Path
 
-    from lagrange.codegen.numba_backend import atomic_write
+    from lagrange.codegen.cache import atomic_write
 
     for _ in range(rounds):
         atomic_write(Path(path), text)

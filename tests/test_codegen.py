@@ -1,3 +1,5 @@
+from pathlib import Path
+
 import numpy as np
 import pytest
 import sympy as sp
@@ -79,22 +81,28 @@ def test_generated_source_is_straight_line_and_uses_cse():
 
 
 def test_numba_cache_reused_and_corruption_recovered(tmp_path, monkeypatch):
-    """The generated module is cached by a hash of its source; a corrupted numba cache is rebuilt."""
-    from lagrange.codegen.numba_backend import cache_dir
+    """Numba's cache of the generated module is sealed in one bundle keyed by a hash of its source; a
+    corrupted bundle is rebuilt."""
+    from lagrange.codegen import numba_backend as nb
+    from lagrange.codegen.cache import cache_dir, read_verified
+    from lagrange.errors import CacheIntegrityWarning
 
     monkeypatch.setenv("LAGRANGE_CACHE_DIR", str(tmp_path))
     s = n_link_pendulum(2)
     y = np.array([0.3, -0.2, 0.1, 0.4])
-    first = s.compile({"g": 9.81}, backend="numba").fun(0.0, y)
-    modules = list(cache_dir().glob("rhs_*.py"))
-    assert len(modules) == 1
-    index_files = list(cache_dir().rglob("*.nbi")) + list(cache_dir().rglob("*.nbc"))
-    assert index_files, "numba wrote no cache"
-    for f in index_files:
-        f.write_bytes(b"garbage")
-    again = s.compile({"g": 9.81}, backend="numba").fun(0.0, y)
+    model = s.compile({"g": 9.81}, backend="numba")
+    first = model.fun(0.0, y)
+    bundles = list(cache_dir().glob("rhs_*.numba"))
+    assert len(bundles) == 1 and read_verified(bundles[0]), "numba wrote no cache"
+    bundles[0].write_bytes(b"garbage")
+    staged = Path(model.dynamics.py_func.__code__.co_filename)
+    nb.purge_numba_cache(model.dynamics.py_func.__module__, staged)  # as a fresh process would be
+    nb._STAGED.pop(staged)
+    with pytest.warns(CacheIntegrityWarning):
+        monkeypatch.setattr("lagrange.codegen.cache._warned", False)
+        again = s.compile({"g": 9.81}, backend="numba").fun(0.0, y)
     assert np.array_equal(first, again)
-    assert len(list(cache_dir().glob("rhs_*.py"))) == 1
+    assert len(list(cache_dir().glob("rhs_*.numba"))) == 1 and read_verified(bundles[0])
 
 
 def test_cse_variants_agree_with_reference(monkeypatch):

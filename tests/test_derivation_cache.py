@@ -234,8 +234,12 @@ def test_changed_declaration_misses_and_is_right(cache, change):
 
 
 def _damage(path, how: str) -> None:
+    """Damage the entry at ``path``: raw damage fails authentication (lagrange.codegen.cache); the last three
+    kinds are written *sealed*, as lagrange itself would write them, and must fail the header check."""
+    from lagrange.codegen.cache import read_verified, write_sealed
+
     data = path.read_bytes()
-    head, _, payload = data.partition(b"\n")
+    head, _, payload = read_verified(path).partition(b"\n")
     key = path.stem.split("_", 1)[1]
     if how == "truncated":
         path.write_bytes(data[: len(data) * 2 // 3])
@@ -244,15 +248,15 @@ def _damage(path, how: str) -> None:
     elif how == "empty":
         path.write_bytes(b"")
     elif how == "payload_bit_flip":
-        path.write_bytes(head + b"\n" + payload[:-5] + bytes([payload[-5] ^ 1]) + payload[-4:])
+        path.write_bytes(data[:-5] + bytes([data[-5] ^ 1]) + data[-4:])
     elif how == "unpicklable_payload":  # a header that matches its payload, which is not what was stored
         bad = b"\x80\x05not a pickle" if path.suffix == ".pkl" else b"\xff\xfe not utf-8"
-        path.write_bytes(dc._header(key, bad) + b"\n" + bad)
+        write_sealed(path, dc._header(key, bad) + b"\n" + bad)
     elif how == "other_environment":  # a well-formed entry written by other versions
-        path.write_bytes(head.replace(b"sympy ", b"sympy 0.0.1+") + b"\n" + payload)
-    else:  # a well-formed entry of another key copied over this one
+        write_sealed(path, head.replace(b"sympy ", b"sympy 0.0.1+") + b"\n" + payload)
+    else:  # a well-formed entry of another key, sealed under this entry's name
         other = "0" * len(key)
-        path.write_bytes(dc._header(other, payload) + b"\n" + payload)
+        write_sealed(path, dc._header(other, payload) + b"\n" + payload)
 
 
 @pytest.mark.parametrize("kind", ["derived", "source"])

@@ -38,7 +38,23 @@ def test_property_and_fault_counts():
     assert _quoted(r"feeds (\d+) random strings") == props.FUZZ_EXAMPLES
     assert _quoted(r"\*\*(\d+) injected faults\*\*") == _module("tests/numerics/test_faults.py").N_FAULTS
     assert _quoted(r"\*\*(\d+) scenarios\*\*") == _module("tests/test_cache.py").CACHE_SCENARIOS
+    assert _quoted(r"\*\*(\d+) integrity scenarios\*\*") == _module("tests/test_cache_integrity.py").INTEGRITY_SCENARIOS
+    assert _quoted(r"\*\*(\d+) entry points\*\*") == _module("tests/test_no_string_eval.py").CANARY_ENTRIES
     derivation = _module("tests/test_derivation_cache.py")
     assert _quoted(r"\*\*(\d+) derivation-cache scenarios\*\*") == derivation.DERIVATION_CACHE_SCENARIOS
     assert _quoted(r"\* (\d+) declared changes") == len(derivation.CHANGES)
     assert _quoted(r"\* (\d+) kinds of damage to each kind of entry") == len(derivation.DAMAGES)
+
+
+def test_readme_cache_and_string_counts():
+    """The README's guarantee table quotes the same cache, integrity and canary counts as the tests."""
+    readme = (ROOT / "README.md").read_text(encoding="utf-8")
+
+    def quoted(pattern: str) -> int:
+        m = re.search(pattern, readme)
+        assert m, f"README.md no longer states {pattern!r}"
+        return int(m.group(1))
+
+    assert quoted(r"\| (\d+) cache scenarios") == _module("tests/test_cache.py").CACHE_SCENARIOS
+    assert quoted(r"\| (\d+) integrity scenarios") == _module("tests/test_cache_integrity.py").INTEGRITY_SCENARIOS
+    assert quoted(r"\| (\d+) entry points") == _module("tests/test_no_string_eval.py").CANARY_ENTRIES

@@ -32,6 +32,7 @@ import sympy as sp
 from ..conventions import t
 from ..errors import LagrangeError, SymbolicTimeoutError
 from ..model.coordinates import coordinate_name, to_functions, to_symbols
+from ..safe_sympify import sympify as _sympify
 from ..simplification import is_zero, run_bounded, solve
 
 __all__ = ["driving_forces", "actuator_forces", "static_equilibrium"]
@@ -42,7 +43,7 @@ _TIDY_LIMIT = 300  # larger results are returned as they are
 
 def _tidy(e):
     """Bounded ``simplify``: at most a few seconds per expression, the input unchanged when it is too big."""
-    e = sp.sympify(e)
+    e = _sympify(e)
     if sp.count_ops(e) > _TIDY_LIMIT:
         return e
     try:
@@ -89,7 +90,7 @@ def _along(expr, eqs, motion: Mapping):
         sub[qdd] = sp.diff(motion[c], t, 2)
         sub[qd] = sp.diff(motion[c], t)
         sub[q] = motion[c]
-    return sp.sympify(expr).xreplace(sub).doit()
+    return _sympify(expr).xreplace(sub).doit()
 
 
 def _check_motion(eqs, motion: Mapping) -> None:
@@ -155,7 +156,7 @@ def actuator_forces(system, virtual_work, unknowns: Sequence, motion: Mapping | 
     stand, back = _real(unknowns)
     fwd = {u: d for d, u in back.items()}
     lam = list(eqs.multipliers)
-    eqns = [sp.Eq(sp.sympify(Fp.get(q, 0)).xreplace(fwd), sp.sympify(need[q]).xreplace(fwd))
+    eqns = [sp.Eq(_sympify(Fp.get(q, 0)).xreplace(fwd), _sympify(need[q]).xreplace(fwd))
             for q in system.coordinates]
     sol = solve(eqns, stand + lam, dict=True, what="the driving-force equations")
     names = ", ".join(map(str, unknowns))
@@ -163,7 +164,7 @@ def actuator_forces(system, virtual_work, unknowns: Sequence, motion: Mapping | 
         raise LagrangeError(f"the actuator forces {names} have no solution: their virtual work cannot produce "
                             "this motion (an unactuated coordinate's equation is not satisfied)")
     undetermined = [str(u) for u, d in zip(unknowns, stand)
-                    if d not in sol[0] or sp.sympify(sol[0][d]).free_symbols & (set(stand) | set(lam))]
+                    if d not in sol[0] or _sympify(sol[0][d]).free_symbols & (set(stand) | set(lam))]
     if len(sol) != 1 or undetermined:
         raise LagrangeError(f"the actuator forces {names} are not determined uniquely ({len(sol)} solution(s)"
                             + (f"; free: {', '.join(undetermined)}" if undetermined else "") + ")")
@@ -180,7 +181,7 @@ def _rest_conditions(system, unk_syms: list) -> tuple[list, list]:
     rest = {v: 0 for v in eqs.qd}
     conds = []
     for i in range(eqs.n):
-        f = sp.sympify(eqs.forcing[i])
+        f = _sympify(eqs.forcing[i])
         dry = [s for s in f.atoms(sp.sign) if s.free_symbols & set(eqs.qd)]
         c = f.subs(rest)
         if dry or c.has(sp.nan, sp.zoo):
@@ -193,9 +194,9 @@ def _rest_conditions(system, unk_syms: list) -> tuple[list, list]:
     unknown_set = set(unk_syms)
     for k, name in enumerate(eqs.constraint_names):
         phi = eqs.constraint_positions[k]
-        if phi is not None and sp.sympify(phi).free_symbols & unknown_set:
-            conds.append(sp.sympify(phi))
-        b = sp.sympify(eqs.constraint_bias[k])
+        if phi is not None and _sympify(phi).free_symbols & unknown_set:
+            conds.append(_sympify(phi))
+        b = _sympify(eqs.constraint_bias[k])
         if b.free_symbols & unknown_set:
             conds.append(b)
         elif not is_zero(b):
@@ -241,7 +242,8 @@ def static_equilibrium(system, unknowns: Sequence, params: Mapping | None = None
 
 
 def _numeric_equilibrium(system, unknowns, stand, lam, conds, params, guess):
-    by_name = {getattr(k, "name", str(k)): v for k, v in params.items()}
+    by_name = {getattr(k, "name", str(k)): _sympify(v, where=f"parameter {getattr(k, 'name', k)}")
+               for k, v in params.items()}
     variables = stand + lam
     sub = {s: by_name[s.name] for c in conds for s in c.free_symbols
            if s.name in by_name and s not in variables}

@@ -21,6 +21,7 @@ import sympy as sp
 from ..conventions import t
 from ..errors import AnalysisError, LagrangeError
 from ..model.coordinates import coordinate_name, position_symbol, to_functions
+from ..safe_sympify import sympify as _sympify
 from ..simplification import solve
 
 __all__ = ["Equilibrium", "equilibrium_equations", "equilibria"]
@@ -51,11 +52,11 @@ def _conditions(system) -> tuple[list, list]:
         raise AnalysisError("equilibria of systems with rough (Coulomb-friction) constraints are not supported "
                             "(static friction is not modelled)")
     rest = {v: 0 for v in eqs.qd}
-    conds = [sp.sympify(e).subs(rest) for e in eqs.forcing]
+    conds = [_sympify(e).subs(rest) for e in eqs.forcing]
     if not eqs.m:
         return conds, list(eqs.q)
     moving = [nm for nm, ph, b in zip(eqs.constraint_names, eqs.constraint_positions, eqs.constraint_bias)
-              if t in sp.sympify(b).free_symbols or (ph is not None and t in sp.sympify(ph).free_symbols)]
+              if t in _sympify(b).free_symbols or (ph is not None and t in _sympify(ph).free_symbols)]
     if moving:
         raise AnalysisError(f"a system with moving (explicit-time) constraints ({', '.join(moving)}) has no static "
                             "equilibrium: eliminate the constraint or write it in a moving frame")
@@ -64,9 +65,9 @@ def _conditions(system) -> tuple[list, list]:
     conds = [e + r for e, r in zip(conds, A.T * lam)]
     for ph, b in zip(eqs.constraint_positions, eqs.constraint_bias):
         if ph is not None:
-            conds.append(sp.sympify(ph))
-        elif sp.sympify(b) != 0:
-            conds.append(sp.sympify(b))
+            conds.append(_sympify(ph))
+        elif _sympify(b) != 0:
+            conds.append(_sympify(b))
     return conds, list(eqs.q) + list(eqs.multipliers)
 
 
@@ -102,10 +103,11 @@ def equilibria(system, params: Mapping | None = None, guess: Mapping | None = No
             q = {c: s.get(position_symbol(c), position_symbol(c)) for c in system.coordinates}
             out.append(Equilibrium(q, {names[lm]: s.get(lm, lm) for lm in eqs.multipliers}))
         return out
-    by_name = {getattr(k, "name", str(k)): v for k, v in (params or {}).items()}
+    by_name = {getattr(k, "name", str(k)): _sympify(v, where=f"parameter {getattr(k, 'name', k)}")
+               for k, v in (params or {}).items()}
     sub = {s: by_name[s.name] for s in eqs.parameters if s.name in by_name}
     t0 = float(by_name.get("t", 0.0))
-    conds = [sp.sympify(c).subs(sub).subs(t, t0) for c in conds]
+    conds = [_sympify(c).subs(sub).subs(t, t0) for c in conds]
     free = set().union(*[c.free_symbols for c in conds]) - set(unknowns)
     if free:
         raise LagrangeError(f"missing parameter values for {sorted(map(str, free))}")

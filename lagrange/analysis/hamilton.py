@@ -21,6 +21,7 @@ import sympy as sp
 from ..conventions import t
 from ..errors import AnalysisError
 from ..model.coordinates import coordinate_name, to_functions
+from ..safe_sympify import sympify as _sympify
 from ..simplification import simplify
 
 __all__ = ["HamiltonianForm", "hamiltonian"]
@@ -94,7 +95,7 @@ def hamiltonian(system) -> HamiltonianForm:
     to_p = dict(zip(qd, vel))
     H = sum((pi * vi for pi, vi in zip(p, vel)), sp.S.Zero) - L.subs(to_p)
     H = simplify(H) if sp.count_ops(H) < 250 else sp.cancel(sp.together(H))
-    Q = [sp.sympify(e).subs(to_p) for e in eqs.nonconservative]
+    Q = [_sympify(e).subs(to_p) for e in eqs.nonconservative]
     qdot = tuple(sp.diff(H, pi) for pi in p)
     pdot = tuple(-sp.diff(H, qi) + Qi for qi, Qi in zip(q, Q))
     return HamiltonianForm(system.coordinates, tuple(q), tuple(p), tuple(momenta), tuple(vel), H, qdot, pdot,

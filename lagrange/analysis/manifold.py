@@ -57,6 +57,7 @@ import sympy as sp
 from ..conventions import t
 from ..errors import AnalysisError, ParameterError
 from ..model.coordinates import coordinate_name, position_symbol, velocity_symbol
+from ..safe_sympify import sympify as _sympify
 
 __all__ = ["reference_state", "numeric_blocks", "symbolic_blocks", "choose_dependent", "reduce"]
 
@@ -94,7 +95,7 @@ def reference_state(system, about: Mapping | None, velocities: Mapping | None, i
                     if isinstance(val, str):  # never parse user strings here (only the spec parser does)
                         raise AnalysisError(f"the reference value of {k} must be a number or a sympy expression, "
                                             f"not the string {val!r}")
-                    out[table[k]] = sp.sympify(val)
+                    out[table[k]] = _sympify(val)
                     break
             else:
                 bad.append(str(k))
@@ -130,7 +131,7 @@ def _check_supported(eqs) -> None:
                             f"the friction of {', '.join(eqs.constraint_names)} depends on the sign of the reaction")
     if eqs.m:
         moving = [nm for nm, row, b in zip(eqs.constraint_names, eqs.constraint_matrix.tolist(), eqs.constraint_bias)
-                  if t in sp.Matrix([row]).free_symbols | sp.sympify(b).free_symbols]
+                  if t in sp.Matrix([row]).free_symbols | _sympify(b).free_symbols]
         if moving:
             raise AnalysisError("linearization on the manifold of moving (explicit-time) constraints is not supported: "
                                 f"{', '.join(moving)}; the linearized system would be time-varying. Eliminate the "
@@ -148,7 +149,7 @@ def _kink_arguments(eqs) -> list:
     args = set()
     for e in eqs.forcing:
         for k in _KINKS:
-            args |= {a.args[0] for a in sp.sympify(e).atoms(k)}
+            args |= {a.args[0] for a in _sympify(e).atoms(k)}
     return sorted(args, key=sp.default_sort_key)
 
 
@@ -181,9 +182,9 @@ def _kernel(eqs, inputs: tuple):
     c = sp.Matrix(list(eqs.constraint_rhs)) if m else sp.zeros(0, 1)
     kinks = _kink_arguments(eqs)
     args = [q, qd, list(inputs), params, t]
-    phis = [sp.sympify(ph) for ph in eqs.constraint_positions if ph is not None]
+    phis = [_sympify(ph) for ph in eqs.constraint_positions if ph is not None]
     first = [M, f, A, b, c, sp.Matrix(kinks) if kinks else sp.zeros(0, 1), sp.Matrix(phis) if phis else sp.zeros(0, 1)]
-    if not any(sp.sympify(e).has(*_NON_ANALYTIC) for X in (M, f, A, b, c) for e in X):
+    if not any(_sympify(e).has(*_NON_ANALYTIC) for X in (M, f, A, b, c) for e in X):
         return _flat(args, first), None, tuple(params)
     res = f + A.T * sp.Matrix(lam) - M * sp.Matrix(qdd) if m else f - M * sp.Matrix(qdd)
     cres = c - A * sp.Matrix(qdd) if m else c
@@ -243,7 +244,7 @@ def numeric_blocks(system, q0: Mapping, v0: Mapping, u0: Mapping, params: Mappin
     first, second, pnames = _kernel(eqs, tuple(inputs))
     by_name = {getattr(k, "name", str(k)): v for k, v in params.items()}
     # symbols of the reference state's expressions (e.g. a speed v of an operating point) are parameters too
-    extra = set().union(*[sp.sympify(v).free_symbols for d in (q0, v0, u0) for v in d.values()]) - set(eqs.parameters)
+    extra = set().union(*[_sympify(v).free_symbols for d in (q0, v0, u0) for v in d.values()]) - set(eqs.parameters)
     known = {p.name for p in eqs.parameters} | {u.name for u in inputs} | {s.name for s in extra} | {"t"}
     unknown = sorted(set(by_name) - known)
     if unknown:
@@ -258,10 +259,10 @@ def numeric_blocks(system, q0: Mapping, v0: Mapping, u0: Mapping, params: Mappin
     strings = [k for k, v in by_name.items() if isinstance(v, str)]
     if strings:
         raise ParameterError(f"parameter value(s) of {', '.join(strings)} must be numbers, not strings")
-    psub = {p: sp.sympify(by_name[p.name]) for p in list(eqs.parameters) + list(extra) if p.name in by_name}
+    psub = {p: _sympify(by_name[p.name]) for p in list(eqs.parameters) + list(extra) if p.name in by_name}
 
     def num(val, what):
-        x = sp.sympify(val).xreplace(psub)
+        x = _sympify(val).xreplace(psub)
         try:
             out = complex(x)
         except (TypeError, ValueError):
@@ -369,8 +370,8 @@ def symbolic_blocks(system, q0: Mapping, v0: Mapping, u0: Mapping, inputs: tuple
                                 f"{a} of a sign/Abs term (friction) is zero at the reference state")
     bad = []
     for k, ph in enumerate(eqs.constraint_positions):
-        if ph is not None and _tidy(sp.sympify(ph).xreplace(at)) != 0:
-            bad.append(f"{eqs.constraint_names[k]}: φ = {_tidy(sp.sympify(ph).xreplace(at))}")
+        if ph is not None and _tidy(_sympify(ph).xreplace(at)) != 0:
+            bad.append(f"{eqs.constraint_names[k]}: φ = {_tidy(_sympify(ph).xreplace(at))}")
     singular = [nm for nm, X in (("M", M0), ("f", f0), ("A", A0), ("c", c0)) if X.has(sp.nan, sp.zoo, sp.oo)]
     if singular and not bad:
         raise AnalysisError(f"the equations are singular at the reference state ({', '.join(singular)} not finite)")
@@ -396,7 +397,7 @@ def symbolic_blocks(system, q0: Mapping, v0: Mapping, u0: Mapping, inputs: tuple
     ev2 = lambda X: _no_delta_matrix(X).xreplace(atq).applyfunc(_tidy)  # noqa: E731
     blk = dict(M=M0, f=f0, A=A0, b=b0, c=c0, qdd=qdd, lam=lam, numeric=False,
                Kq=ev2(res.jacobian(q)), Kv=ev2(f.jacobian(qd)), Ku=ev2(f.jacobian(u)) if u else sp.zeros(n, 0))
-    if m and all(at[s] == 0 for s in eqs.qd) and all(sp.sympify(e) == 0 for e in b):
+    if m and all(at[s] == 0 for s in eqs.qd) and all(_sympify(e) == 0 for e in b):
         # c = −(∂(A q̇)/∂q) q̇ is quadratic in q̇: at rest its derivatives vanish (saves the costly ∂c/∂q)
         blk.update(Cq=ev2(-(A * sp.Matrix(qdd)).jacobian(q)),
                    Cv=sp.zeros(m, n), Cu=sp.zeros(m, len(u)), Gq=sp.zeros(m, n))
@@ -416,7 +417,7 @@ def _no_delta_matrix(X):
 
 def _tidy(e):
     """Cheap normalisation for symbolic blocks: bounded simplify of small expressions only."""
-    e = sp.sympify(e)
+    e = _sympify(e)
     if e.is_number or sp.count_ops(e) > 150:
         return e
     from ..simplification import simplify

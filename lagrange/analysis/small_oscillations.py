@@ -38,6 +38,7 @@ import sympy as sp
 from ..conventions import t
 from ..errors import AnalysisError, LagrangeError
 from ..model.coordinates import coordinate_name, position_symbol, velocity_symbol
+from ..safe_sympify import sympify as _sympify
 from ..simplification import factor, simplify, solve
 from . import manifold
 from .equilibria import Equilibrium, equilibria, equilibrium_equations
@@ -47,7 +48,8 @@ __all__ = ["equilibrium_equations", "equilibria", "Equilibrium", "linearize", "L
 
 
 def _by_name(params: Mapping | None) -> dict:
-    return {getattr(k, "name", str(k)): v for k, v in (params or {}).items()}
+    return {getattr(k, "name", str(k)): _sympify(v, where=f"parameter {getattr(k, 'name', k)}")
+            for k, v in (params or {}).items()}
 
 
 def _numeric_matrix(Mx, params: Mapping | None, what: str) -> np.ndarray:
@@ -158,7 +160,7 @@ class LinearModel:
         if self.params is None or not params:
             return
         given, used = _by_name(params), _by_name(self.params)
-        diff = [k for k in given if k in used and float(sp.sympify(given[k])) != float(sp.sympify(used[k]))]
+        diff = [k for k in given if k in used and float(_sympify(given[k])) != float(_sympify(used[k]))]
         if diff:
             raise AnalysisError(f"this numeric linearization was made with other values of {', '.join(diff)}: "
                                 "linearize again with the new parameters")

@@ -30,6 +30,7 @@ import sympy as sp
 from ..conventions import t
 from ..errors import AnalysisError
 from ..model.coordinates import coordinate_name, position_symbol, to_functions, velocity_symbol
+from ..safe_sympify import sympify as _sympify
 from ..simplification import simplify, solve
 from .small_oscillations import LinearModel
 
@@ -61,7 +62,7 @@ class Routhian:
             dRdv = sp.diff(self.R, qd[k])
             ddt = sum((sp.diff(dRdv, q[j]) * qd[j] + sp.diff(dRdv, qd[j]) * qdd[j] for j in range(len(q))), sp.S.Zero)
             ddt += sp.diff(dRdv, t)
-            Q = sp.sympify(eqs.nonconservative[i]).subs(to_rates)
+            Q = _sympify(eqs.nonconservative[i]).subs(to_rates)
             out.append(sp.expand(ddt - sp.diff(self.R, q[k]) - Q))
         return out
 
@@ -109,7 +110,7 @@ def oscillations_about_steady_motion(r: Routhian, about: Mapping) -> LinearModel
     """a, gyroscopic g and c of the small oscillations about a steady motion ``about = {q: b}``."""
     q = [position_symbol(c) for c in r.kept]
     qd = [velocity_symbol(c) for c in r.kept]
-    at = {position_symbol(c): sp.sympify(v) for c, v in about.items()}
+    at = {position_symbol(c): _sympify(v) for c, v in about.items()}
     at.update({v: 0 for v in qd})
     n = len(q)
     a = sp.Matrix(n, n, lambda i, j: sp.diff(r.R, qd[i], qd[j]).subs(at))

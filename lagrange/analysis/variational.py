@@ -30,6 +30,7 @@ from ..codegen.numeric import bind_parameters
 from ..conventions import t
 from ..conventions import t as _t
 from ..errors import IntegrationError, LagrangeError
+from ..safe_sympify import sympify as _sympify
 from ..simplification import simplify
 
 __all__ = ["euler_lagrange", "action", "VariationalResult", "variational_integrate"]
@@ -40,7 +41,7 @@ def euler_lagrange(F, functions: Sequence, variable) -> list[sp.Eq]:
     ``variable``), any order of derivatives."""
     out = []
     for y in functions:
-        order = max([d.derivative_count for d in sp.sympify(F).atoms(sp.Derivative) if d.expr == y] + [0])
+        order = max([d.derivative_count for d in _sympify(F).atoms(sp.Derivative) if d.expr == y] + [0])
         e = sp.diff(F, y)
         for j in range(1, order + 1):
             e += (-1) ** j * sp.diff(sp.diff(F, sp.diff(y, (variable, j))), (variable, j))
@@ -98,7 +99,7 @@ def action(path, system=None, params: Mapping | None = None, *, t=None) -> float
             raise LagrangeError(f"the path must give every coordinate; missing {', '.join(missing)}")
         funcs = [path[c] for c in eqs.coordinates]
         if all(isinstance(f, sp.Basic) or isinstance(f, int | float) for f in funcs):
-            qs = sp.lambdify(_t, [sp.sympify(f) for f in funcs], "numpy")
+            qs = sp.lambdify(_t, [_sympify(f) for f in funcs], "numpy")
             vs = sp.lambdify(_t, [sp.diff(f, _t) for f in funcs], "numpy")
             return _quad(lambda s: Lf(qs(s), vs(s), s), t)
         path = _stack([f if callable(f) else (lambda s, c=float(f): c) for f in funcs])

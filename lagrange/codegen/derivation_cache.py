@@ -1,8 +1,9 @@
 """The derivation cache: derived equations and generated source on disk, so a re-run of the same declared
 model in a fresh process skips both the sympy derivation and the code generation (CSE, printing).
 
-Two kinds of entry live in :func:`~lagrange.codegen.numba_backend.cache_dir` (``$LAGRANGE_CACHE_DIR``,
-else ``~/.cache/lagrange``), next to the numba modules:
+Two kinds of entry live in :func:`~lagrange.codegen.cache.cache_dir` (``$LAGRANGE_CACHE_DIR``, else
+``$XDG_CACHE_HOME/lagrange``, else ``~/.cache/lagrange``; private, see :mod:`lagrange.codegen.cache`), next
+to the numba bundles:
 
 ``derived_<key>.pkl``
     the pickled :class:`~lagrange.derive.equations.Equations` of a :class:`~lagrange.System`, under
@@ -21,10 +22,12 @@ stages that make the entries* (:data:`SOURCES`: an edited checkout never reuses 
 code), the sympy, symengine (or its absence) and Python versions and the machine. Each entry starts with
 one header line holding its key, the SHA-256 of its payload and the environment; an entry whose header does
 not match (damaged, truncated, renamed, or written by other versions) is ignored and rebuilt, so a stale or
-damaged entry never gives a wrong answer. Writes are atomic (:func:`~lagrange.codegen.numba_backend.atomic_write`). A
+damaged entry never gives a wrong answer. Every entry is sealed with an HMAC under the per-user key of the
+cache directory (:func:`~lagrange.codegen.cache.write_sealed`) and authenticated before it is unpickled or
+used (:func:`~lagrange.codegen.cache.read_verified`): a planted entry, a valid entry copied under another
+key, an edited or a damaged one is rebuilt, never loaded. Writes are atomic and fsynced. A
 declaration holding a sympy class defined outside sympy and lagrange (a user's ``Function`` subclass: its
-behaviour is not in its ``srepr``) is never cached. Entries are pickles: like the generated modules next to
-them, the cache directory must be writable by you only.
+behaviour is not in its ``srepr``) is never cached.
 
 Set ``LAGRANGE_DERIVATION_CACHE=0`` (or ``off``, ``false``, ``no``) to turn the cache off: every run then
 derives and generates afresh and writes no entry. The numba backend still writes its module (numba needs a
@@ -49,7 +52,8 @@ from sympy.core.function import UndefinedFunction
 from sympy.printing.repr import ReprPrinter
 
 from ..derive.equations import Equations
-from .numba_backend import atomic_write, cache_dir
+from ..errors import CacheError
+from .cache import cache_dir, read_verified, write_sealed
 
 __all__ = ["ENV_VAR", "MAX_ENTRIES_VAR", "prune",
            "enabled", "environment", "declaration_key", "equations_fingerprint", "cached_equations",
@@ -211,7 +215,9 @@ def equations_fingerprint(eqs: Equations) -> str | None:
 def _entry_path(kind: str, key: str, suffix: str) -> Path | None:
     try:
         return cache_dir() / f"{kind}_{key}{suffix}"
-    except OSError:  # no usable cache directory: run uncached
+    except CacheError:  # a directory others could write: refused loudly, never used
+        raise
+    except OSError:  # no usable cache directory (read-only home, ...): run uncached
         return None
 
 
@@ -220,13 +226,12 @@ def _header(key: str, payload: bytes) -> bytes:
 
 
 def _read(path: Path | None, key: str) -> bytes | None:
-    """The payload of the entry at ``path``, or None when it is missing or its header does not match
-    (damaged, truncated, another key, another environment)."""
+    """The payload of the entry at ``path``, or None when it is missing, fails authentication (planted,
+    edited, damaged, copied under another key) or its header does not match (another key, environment)."""
     if path is None:
         return None
-    try:
-        data = path.read_bytes()
-    except OSError:
+    data = read_verified(path)
+    if data is None:
         return None
     head, newline, payload = data.partition(b"\n")
     return payload if newline and head == _header(key, payload) else None
@@ -236,8 +241,10 @@ def _write(path: Path | None, key: str, payload: bytes) -> None:
     """Store an entry atomically, then prune; a cache that cannot be written is skipped (it only saves time)."""
     if path is not None:
         try:
-            atomic_write(path, _header(key, payload) + b"\n" + payload)
+            write_sealed(path, _header(key, payload) + b"\n" + payload)
             prune(path.parent)
+        except CacheError:
+            raise
         except OSError:
             pass
 
@@ -248,7 +255,7 @@ MAX_ENTRIES_VAR = "LAGRANGE_DERIVATION_CACHE_MAX"
 
 
 def prune(directory: Path, max_entries: int | None = None) -> int:
-    """Delete the least recently written entries (``derived_*.pkl``, ``source_*.txt``) beyond
+    """Delete the least recently written entries (``derived_*.pkl``, ``source_*.txt``, ``*.numba``) beyond
     ``max_entries`` (default ``$LAGRANGE_DERIVATION_CACHE_MAX`` or 2000), down to 90 % of it; returns the
     number deleted. Called after every write (a cache miss), so the directory never grows without bound."""
     if max_entries is None:
@@ -257,7 +264,7 @@ def prune(directory: Path, max_entries: int | None = None) -> int:
         except ValueError:
             max_entries = 2000
     entries = []
-    for pattern in ("derived_*.pkl", "source_*.txt"):
+    for pattern in ("derived_*.pkl", "source_*.txt", "*.numba"):
         for path in directory.glob(pattern):
             try:
                 entries.append((path.stat().st_mtime, path))
@@ -292,7 +299,7 @@ def cached_equations(system, derive: Callable) -> Equations:
     payload = _read(path, key)
     if payload is not None:
         try:
-            eqs, fingerprint = pickle.loads(payload)  # noqa: S301 - our own entry, checksummed
+            eqs, fingerprint = pickle.loads(payload)  # noqa: S301 - our own entry, authenticated (HMAC)
         except Exception:  # noqa: BLE001 - an entry that does not load is rebuilt
             eqs = fingerprint = None
         if isinstance(eqs, Equations) and isinstance(fingerprint, str) and eqs.coordinates == system.coordinates:

@@ -32,7 +32,7 @@ import numpy as np
 import sympy as sp
 
 from ..derive.equations import Equations
-from ..errors import BackendError, ParameterError, SingularMassMatrixError
+from ..errors import BackendError, ParameterError, SingularMassMatrixError, SpecError
 from ..model.coordinates import coordinate_name
 from .cse import fuse, numeric_arguments, rename_map
 from .source import rhs_source
@@ -42,11 +42,26 @@ __all__ = ["NumericModel", "ConstraintFunctions", "compile_equations", "bind_par
 BACKENDS = ("python", "numba", "reference", "auto")
 
 
+def _number(raw, where: str) -> float:
+    """The float of a parameter value: a number, a constant sympy expression, or a string holding an
+    expression of numbers, read by the spec parser (:func:`lagrange.spec.expressions.parse_expression`, which
+    evaluates nothing); a string is never given to ``sympify`` (that is ``eval``). TypeError/ValueError
+    otherwise."""
+    if isinstance(raw, str):
+        from ..spec.expressions import parse_expression
+
+        raw = parse_expression(raw, {}, where=where)
+    if isinstance(raw, sp.Basic):
+        return float(raw.evalf())
+    return float(raw)
+
+
 def bind_parameters(eqs: Equations, params: Mapping) -> np.ndarray:
     """Values for the ``p`` vector, in the order of ``eqs.numeric_parameters``; keys may be symbols or names.
 
     ``params`` holds the parameters and a constant value for each input (``eqs.inputs``; a time-varying
-    input's slot holds any number, refilled per call by the model's schedule). Raises
+    input's slot holds any number, refilled per call by the model's schedule). A string value is read by the
+    spec parser as an expression of numbers (``"2*pi"``), never evaluated. Raises
     :class:`ParameterError` listing every missing, unknown or non-finite value.
     """
     by_name = {}
@@ -75,12 +90,12 @@ def bind_parameters(eqs: Equations, params: Mapping) -> np.ndarray:
     for n in wanted + inputs:
         if n in by_name:
             try:
-                raw = by_name[n]
-                v = float(sp.sympify(raw).evalf()) if isinstance(raw, (str, sp.Basic)) else float(raw)
-            except (TypeError, ValueError, sp.SympifyError):
+                v = _number(by_name[n], f"{'input' if n in inputs else 'parameter'} {n}")
+            except (TypeError, ValueError) as exc:
                 kind = "input" if n in inputs else "parameter"
                 extra = " (time-varying inputs are given to simulate)" if n in inputs else ""
-                problems.append(f"{kind} {n} = {by_name[n]!r} is not a number{extra}")
+                why = f" ({exc})" if isinstance(exc, SpecError) else ""
+                problems.append(f"{kind} {n} = {by_name[n]!r} is not a number{extra}{why}")
                 continue
             if not math.isfinite(v):
                 problems.append(f"{'input' if n in inputs else 'parameter'} {n} = {v} is not finite")

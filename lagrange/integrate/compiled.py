@@ -26,7 +26,6 @@ there; :func:`integrate_compiled` raises :class:`~lagrange.errors.IntegrationErr
 from __future__ import annotations
 
 import importlib.util
-import os
 import warnings
 from dataclasses import dataclass
 from enum import Enum
@@ -152,21 +151,22 @@ def choose_loop(loop: str, *, backend: str, model: NumericModel | None, eqs, met
     return True, "compiled loop"
 
 
-_LOADED: dict[tuple[str | None, str], ModuleType] = {}  # ($LAGRANGE_CACHE_DIR, file name): the module
+_LOADED: dict[tuple[str, str], ModuleType] = {}  # (cache directory, file name): the module
 
 
 def kernel(filename: str, prefix: str, what: str) -> ModuleType:
     """A self-contained numba module of this package (``filename``), imported once per process.
 
-    The module is imported from a copy in lagrange's cache directory
-    (:func:`~lagrange.codegen.numba_backend.cache_dir`, ``$LAGRANGE_CACHE_DIR``), named ``prefix`` + the hash
-    of its text and of the lagrange, numba, NumPy and Python versions, like the generated model modules:
-    numba writes its cache next to the module (``__pycache__``, or ``$NUMBA_CACHE_DIR`` when set), which
-    works even when lagrange is installed in a read-only site-packages, and the kernel is compiled once per
-    machine and version. A corrupted numba cache is purged and rebuilt once; ``what`` names the feature in
-    errors.
+    The module is staged like the generated model modules (:func:`~lagrange.codegen.numba_backend.write_module`),
+    named ``prefix`` + the hash of its text and of the lagrange, numba, NumPy and Python versions; numba's
+    cache of it is kept as a sealed bundle in lagrange's cache directory
+    (:func:`~lagrange.codegen.cache.cache_dir`), which works even when lagrange is installed in a read-only
+    site-packages, and the kernel is compiled once per machine and version. A corrupted numba cache is
+    purged and rebuilt once; ``what`` names the feature in errors.
     """
-    key = (os.environ.get("LAGRANGE_CACHE_DIR"), filename)  # cache_dir() follows this variable alone
+    from ..codegen.cache import cache_root
+
+    key = (str(cache_root()), filename)
     if key not in _LOADED:
         from ..codegen.numba_backend import _require_numba, load_cached
 

@@ -43,6 +43,7 @@ from ..conventions import t
 from ..errors import DeclarationError
 from ..model.constraints import Holonomic, Nonholonomic
 from ..model.coordinates import SYMPY_TIME, coordinate_name, normalize_time
+from ..safe_sympify import sympify as _sympify
 from ..simplification import is_zero
 
 __all__ = ["from_mechanics", "to_mechanics"]
@@ -109,7 +110,7 @@ def from_mechanics(obj, coordinates: Sequence | None = None, *, name: str = "", 
     if isinstance(obj, (sp.Expr, int, float)) and not isinstance(obj, bool):
         if coordinates is None:
             raise DeclarationError("from_mechanics(L) needs the coordinates: from_mechanics(L, [q1, q2])")
-        T, V = _split_lagrangian(normalize_time(sp.sympify(obj)), normalize_time(list(coordinates)))
+        T, V = _split_lagrangian(normalize_time(_sympify(obj)), normalize_time(list(coordinates)))
         return _system(coordinates, T, V, name=name, **system_options)
     raise DeclarationError(f"from_mechanics: cannot read {type(obj).__name__}: give a LagrangesMethod, a KanesMethod, "
                            "a sympy.physics.mechanics.System or a Lagrangian with its coordinates")
@@ -206,7 +207,7 @@ def _from_kane_model(N, q, u, kdes, bodies, loads, hol, nonhol, name):
     T, V = sp.S.Zero, sp.S.Zero
     for body in bodies:
         T += body.kinetic_energy(N)
-        V += sp.sympify(getattr(body, "potential_energy", 0))
+        V += _sympify(getattr(body, "potential_energy", 0))
         _check_point(body.masscenter, N, q, qd, u_map, f"the mass centre of {body.name}")
         if isinstance(body, me.RigidBody):
             _check_frame(body.frame, N, q, qd, u_map, f"the frame of {body.name}")
@@ -309,7 +310,7 @@ def to_mechanics(system):
     back = {t: ts, **{c: sp.Function(coordinate_name(c))(ts) for c in system.coordinates}}
 
     def s(e):
-        return sp.sympify(e).xreplace(back)
+        return _sympify(e).xreplace(back)
 
     q = [s(c) for c in system.coordinates]
     N = me.ReferenceFrame("N")

@@ -24,6 +24,7 @@ import sympy as sp
 
 from ..conventions import t
 from ..errors import DeclarationError
+from ..safe_sympify import sympify as _sympify
 from .coordinates import normalize_time, time_derivative, to_functions, to_symbols
 
 if TYPE_CHECKING:
@@ -45,7 +46,7 @@ def as_vector(components, what: str) -> sp.Matrix:
         comps = [components]
     if not 1 <= len(comps) <= 3:
         raise DeclarationError(f"{what} needs 1 to 3 components (x, y, z), got {len(comps)}")
-    comps = [sp.sympify(c) for c in comps] + [sp.S.Zero] * (3 - len(comps))
+    comps = [_sympify(c) for c in comps] + [sp.S.Zero] * (3 - len(comps))
     return sp.Matrix(comps)
 
 
@@ -83,7 +84,7 @@ class Particle:
     name: str = ""
 
     def __init__(self, mass, position, name: str = ""):
-        mass, position = normalize_time(sp.sympify(mass)), normalize_time(position)  # dynamicsymbols accepted
+        mass, position = normalize_time(_sympify(mass)), normalize_time(position)  # dynamicsymbols accepted
         object.__setattr__(self, "mass", mass)
         object.__setattr__(self, "position", as_vector(position, f"position of particle {name!r}"))
         object.__setattr__(self, "name", name)
@@ -104,7 +105,7 @@ class Particle:
 
     def subs(self, mapping) -> Particle:
         """The particle with ``mapping`` substituted in its mass and position (then ``doit``)."""
-        return Particle(sp.sympify(self.mass).subs(mapping).doit(), self.position.subs(mapping).doit(), self.name)
+        return Particle(_sympify(self.mass).subs(mapping).doit(), self.position.subs(mapping).doit(), self.name)
 
     def __repr__(self) -> str:
         label = f" {self.name!r}" if self.name else ""

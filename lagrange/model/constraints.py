@@ -26,6 +26,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from ..conventions import t
+from ..safe_sympify import sympify as _sympify
 from ..simplification import is_zero
 from .coordinates import (
     coordinate_name,
@@ -55,7 +56,7 @@ class IntegrableConstraintWarning(UserWarning):
 
 
 def _expr(e):
-    e = sp.sympify(e)
+    e = _sympify(e)
     if isinstance(e, sp.Equality):
         return e.lhs - e.rhs
     return e
@@ -120,7 +121,7 @@ class Differential:
         object.__setattr__(self, "dt", normalize_time(self.dt))
 
     def velocity_form(self):
-        return sum((sp.sympify(a) * q.diff(t) for q, a in self.coefficients.items()), sp.S.Zero) + sp.sympify(self.dt)
+        return sum((_sympify(a) * q.diff(t) for q, a in self.coefficients.items()), sp.S.Zero) + _sympify(self.dt)
 
 
 @dataclass(frozen=True)
@@ -165,12 +166,12 @@ def normalize_constraints(constraints, coords: Sequence, problems: list) -> tupl
         declared = type(c).__name__ if isinstance(c, (Holonomic, Nonholonomic, Differential, Rough)) else None
         friction = None
         if isinstance(c, Rough):
-            vs = sp.sympify(c.sliding)
+            vs = _sympify(c.sliding)
             if not vs.atoms(sp.Derivative) or any(sp.diff(vs, q.diff(t)).has(*[p.diff(t) for p in coords])
                                                    for q in coords):
                 problems.append(f"{label}: the sliding velocity {vs} must be linear in the velocities")
                 continue
-            friction = (sp.sympify(c.mu), vs, sp.sympify(c.normal))
+            friction = (_sympify(c.mu), vs, _sympify(c.normal))
             c = Holonomic(c.expr, c.name)
             declared = "Holonomic"
         unilateral = bool(getattr(c, "unilateral", False))

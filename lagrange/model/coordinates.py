@@ -14,6 +14,7 @@ import sympy as sp
 from sympy.core.function import AppliedUndef
 
 from ..conventions import VELOCITY_SUFFIX, t
+from ..safe_sympify import sympify as _sympify
 
 __all__ = [
     "coordinates",
@@ -176,7 +177,7 @@ def virtual_displacement(q) -> sp.Symbol:
 
 def applied_functions(expr) -> set:
     """Every undefined function application in ``expr`` (coordinates and strays alike)."""
-    return set(sp.sympify(expr).atoms(AppliedUndef))
+    return set(_sympify(expr).atoms(AppliedUndef))
 
 
 def delta(expr):
@@ -194,7 +195,7 @@ def delta(expr):
     >>> delta(b*x**2)
     2*b*delta_x*x(t)
     """
-    expr = sp.sympify(expr)
+    expr = _sympify(expr)
     if expr.atoms(sp.Derivative):
         raise ValueError(f"delta() of {expr} contains velocities: a virtual displacement freezes time")
     coords = sorted((f for f in applied_functions(expr) if is_coordinate(f)), key=str)
@@ -231,12 +232,12 @@ def to_symbols(expr, coords: Sequence):
     its inner ``q(t)`` is reached); a fraction of the cost of ``subs``, which tries algebraic matches that
     cannot occur here (the derivatives of a coordinate are atoms of the expression tree).
     """
-    return sp.sympify(expr).xreplace(_symbol_map(tuple(coords)))
+    return _sympify(expr).xreplace(_symbol_map(tuple(coords)))
 
 
 def to_functions(expr, coords: Sequence):
     """Inverse of :func:`to_symbols`: plain symbols back to functions of t (for printing)."""
-    return sp.sympify(expr).xreplace(_function_map(tuple(coords)))
+    return _sympify(expr).xreplace(_function_map(tuple(coords)))
 
 
 @lru_cache(maxsize=256)

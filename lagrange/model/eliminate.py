@@ -19,6 +19,7 @@ from collections.abc import Mapping, Sequence
 import sympy as sp
 
 from ..errors import DeclarationError
+from ..safe_sympify import sympify as _sympify
 from ..simplification import is_zero, solve
 from .constraints import Holonomic, Nonholonomic
 from .coordinates import coordinate_name, is_coordinate, position_symbol
@@ -44,7 +45,7 @@ def _solve_for(system, q) -> sp.Expr:
 
 
 def _vanishes(expr, coords) -> bool:
-    expr = sp.sympify(expr)
+    expr = _sympify(expr)
     if is_zero(expr):  # nonzero expressions are decided numerically, without simplify
         return True
     rng = random.Random(5)
@@ -83,11 +84,11 @@ def eliminate(system, solutions: Mapping | Sequence):
             problems.append(f"{q} is not a coordinate of the system")
     if problems:
         raise DeclarationError(problems, subject="elimination")
-    sub = {q: sp.sympify(Y) for q, Y in solutions.items()}
+    sub = {q: _sympify(Y) for q, Y in solutions.items()}
     keep = [q for q in system.coordinates if q not in sub]
 
     def s(e):
-        return sp.sympify(e).subs(sub).doit()
+        return _sympify(e).subs(sub).doit()
 
     remaining = []
     for c in system.constraints:

@@ -26,6 +26,7 @@ from collections.abc import Mapping, Sequence
 import sympy as sp
 
 from ..conventions import t
+from ..safe_sympify import sympify as _sympify
 from .bodies import Force, MaterialPoint
 from .coordinates import (
     coordinate_name,
@@ -55,7 +56,7 @@ def _from_force(force: Force, coords: Sequence) -> dict:
 
 
 def _from_virtual_work(expr, coords: Sequence, problems: list) -> dict:
-    expr = sp.expand(sp.sympify(expr))
+    expr = sp.expand(_sympify(expr))
     deltas = {virtual_displacement(q): q for q in coords}
     stray = sorted(
         str(s) for s in expr.free_symbols if s.name.startswith("delta_") and s not in deltas
@@ -76,7 +77,7 @@ def _from_virtual_work(expr, coords: Sequence, problems: list) -> dict:
             f"virtual work has a term without a virtual displacement: {rest}; every term of δW must be "
             "a force times some delta_q"
         )
-    if any(sp.sympify(c).free_symbols & set(deltas) for c in out.values()):
+    if any(_sympify(c).free_symbols & set(deltas) for c in out.values()):
         problems.append("virtual work is not linear in the virtual displacements")
     return out
 
@@ -107,7 +108,7 @@ def generalized_forces(forces, coords: Sequence, problems: list) -> dict:
                         f"({', '.join(coordinate_name(c) for c in coords)})"
                     )
                     continue
-                total[q] += sp.sympify(value)
+                total[q] += _sympify(value)
         elif _is_torque(item):
             w = to_symbols(item.angular_velocity(), coords)
             for q in coords:
@@ -121,7 +122,7 @@ def generalized_forces(forces, coords: Sequence, problems: list) -> dict:
                 problems.append(str(exc))
         else:
             try:
-                expr = sp.sympify(item)
+                expr = _sympify(item)
             except (sp.SympifyError, TypeError):
                 problems.append(
                     f"cannot read {item!r} as forces: give a dict {{q: F_q}}, lagrange.Force(at, vector) "

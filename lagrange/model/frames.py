@@ -18,6 +18,7 @@ from __future__ import annotations
 import sympy as sp
 
 from ..conventions import t
+from ..safe_sympify import sympify as _sympify
 from ..simplification import trigsimp
 from .bodies import as_vector
 from .coordinates import time_derivative
@@ -75,9 +76,9 @@ class EarthFrame(Frame):
     earth of radius ``radius`` turning at ``omega`` about the inertial Z axis (through the centre)."""
 
     def __init__(self, latitude, omega=OMEGA_EARTH, radius=None, name: str = "earth"):
-        Phi = sp.sympify(latitude)
-        w = sp.sympify(omega)
-        R = sp.Symbol("R", positive=True) if radius is None else sp.sympify(radius)
+        Phi = _sympify(latitude)
+        w = _sympify(omega)
+        R = sp.Symbol("R", positive=True) if radius is None else _sympify(radius)
         spin = rot_z(w * t)
         east = sp.Matrix([0, 1, 0])
         north = sp.Matrix([-sp.sin(Phi), 0, sp.cos(Phi)])

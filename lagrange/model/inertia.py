@@ -37,6 +37,7 @@ import numpy as np
 import sympy as sp
 
 from ..errors import DeclarationError
+from ..safe_sympify import sympify as _sympify
 from ..simplification import is_zero, simplify
 
 __all__ = [
@@ -56,7 +57,7 @@ _AXES = {"x": 0, "y": 1, "z": 2}
 
 def _exact(value, what: str, problems: list[str]) -> sp.Expr:
     """Sympify ``value``; record a problem if it holds a float (the symbolic layer is exact)."""
-    expr = sp.sympify(value)
+    expr = _sympify(value)
     if isinstance(expr, sp.Basic) and expr.atoms(sp.Float):
         problems.append(f"{what} = {value!r} holds a float; use an integer, sp.Rational or a symbol")
     return expr
@@ -64,7 +65,7 @@ def _exact(value, what: str, problems: list[str]) -> sp.Expr:
 
 def _rational(value):
     """``value`` with every Float replaced by the rational of its decimal representation (0.1 → 1/10)."""
-    expr = sp.sympify(value)
+    expr = _sympify(value)
     if isinstance(expr, sp.Basic) and expr.atoms(sp.Float):
         expr = expr.xreplace({f: sp.nsimplify(f, rational=True) for f in expr.atoms(sp.Float)})
     return expr

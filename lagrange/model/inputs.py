@@ -30,6 +30,8 @@ from collections.abc import Iterable, Sequence
 
 import sympy as sp
 
+from ..safe_sympify import sympify as _sympify
+
 __all__ = ["Input", "inputs", "is_input", "inputs_in"]
 
 
@@ -75,5 +77,5 @@ def inputs_in(exprs: Iterable) -> set:
     """The :class:`Input` symbols among the free symbols of ``exprs``."""
     out: set = set()
     for e in exprs:
-        out |= {s for s in sp.sympify(e).free_symbols if is_input(s)}
+        out |= {s for s in _sympify(e).free_symbols if is_input(s)}
     return out

@@ -17,6 +17,7 @@ import sympy as sp
 from sympy.core.function import AppliedUndef
 
 from ..errors import SymbolicTimeoutError
+from ..safe_sympify import sympify as _sympify
 from ..simplification import run_bounded
 
 __all__ = ["evaluate_integrals", "SECONDS"]
@@ -47,7 +48,7 @@ def evaluate_integrals(expr, what: str, problems: list):
 
     An integral sympy cannot evaluate within :data:`SECONDS` (per attempt) is left in place and a problem
     naming it and ``what`` is appended to ``problems`` (the caller raises one DeclarationError for all)."""
-    expr = sp.sympify(expr)
+    expr = _sympify(expr)
     if not expr.has(sp.Integral):
         return expr
 

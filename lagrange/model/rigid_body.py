@@ -24,6 +24,7 @@ from functools import cached_property
 
 import sympy as sp
 
+from ..safe_sympify import sympify as _sympify
 from .bodies import MaterialPoint, as_vector
 from .coordinates import normalize_time, time_derivative
 from .inertia import Inertia
@@ -41,7 +42,7 @@ def _tensor(inertia) -> sp.Matrix:
             raise ValueError("an inertia matrix must be a symmetric 3x3 matrix (the signed tensor)")
         return J
     if isinstance(inertia, Sequence) and len(inertia) == 3:
-        return sp.diag(*[sp.sympify(v) for v in inertia])
+        return sp.diag(*[_sympify(v) for v in inertia])
     raise ValueError("inertia must be an Inertia, a signed 3x3 tensor or three principal moments (I_x, I_y, I_z)")
 
 
@@ -68,7 +69,7 @@ class RigidBody:
     """
 
     def __init__(self, mass, inertia, origin=(0, 0, 0), orientation=None, com=(0, 0, 0), name: str = ""):
-        mass, inertia, origin, com = (normalize_time(x) for x in (sp.sympify(mass), inertia, origin, com))
+        mass, inertia, origin, com = (normalize_time(x) for x in (_sympify(mass), inertia, origin, com))
         if isinstance(orientation, (sp.MatrixBase, list, tuple)):  # dynamicsymbols accepted
             orientation = normalize_time(orientation)
         self.mass = mass
@@ -139,7 +140,7 @@ class RigidBody:
         """The body with ``mapping`` substituted (used by :func:`lagrange.eliminate`)."""
 
         def s(x):
-            return sp.sympify(x).subs(mapping).doit()
+            return _sympify(x).subs(mapping).doit()
 
         orient = self.orientation
         if isinstance(orient, EulerAngles):

@@ -27,6 +27,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from ..conventions import t
+from ..safe_sympify import sympify as _sympify
 from ..simplification import trigsimp
 from .coordinates import normalize_fields, time_derivative
 
@@ -170,7 +171,7 @@ class RotationSequence:
                 raise ValueError(f"RotationSequence takes (axis, angle) pairs, got {item!r}") from None
             if axis not in _ELEMENTARY:
                 raise ValueError(f"rotation axis {axis!r} must be 'x', 'y' or 'z'")
-            steps.append((axis, sp.sympify(angle)))
+            steps.append((axis, _sympify(angle)))
         if not steps:
             raise ValueError("RotationSequence needs at least one (axis, angle) pair")
         self.rotations: tuple = tuple(steps)
@@ -198,7 +199,7 @@ class RotationSequence:
         return w
 
     def subs(self, mapping) -> RotationSequence:
-        return RotationSequence(*((a, sp.sympify(th).subs(mapping).doit()) for a, th in self.rotations))
+        return RotationSequence(*((a, _sympify(th).subs(mapping).doit()) for a, th in self.rotations))
 
     def constraints(self) -> tuple:
         return ()

@@ -21,6 +21,7 @@ from sympy.core.function import AppliedUndef
 from ..conventions import VELOCITY_SUFFIX, t
 from ..conventions import t as _TIME
 from ..errors import DeclarationError
+from ..safe_sympify import sympify as _sympify
 from .bodies import Body, Force
 from .constraints import Differential, Holonomic, Nonholonomic, normalize_constraints
 from .coordinates import coordinate_name, is_coordinate, normalize_time, virtual_displacement
@@ -55,7 +56,7 @@ def _as_coordinate_tuple(coords) -> tuple:
 
 def _sym(expr, what: str, problems: list):
     try:
-        return sp.sympify(expr)
+        return _sympify(expr)
     except (sp.SympifyError, TypeError, SyntaxError):
         problems.append(f"{what} = {expr!r} is not a sympy expression")
         return sp.S.Zero
@@ -429,7 +430,7 @@ class System:
         for b in self.bodies:
             exprs += list(b.position_vectors())
             exprs += [getattr(b, a) for a in ("mass", "inertia", "com", "R", "origin") if hasattr(b, a)]
-        out = set().union(*(sp.sympify(e).free_symbols for e in exprs))
+        out = set().union(*(_sympify(e).free_symbols for e in exprs))
         return frozenset(s for s in out if s != t and not s.name.startswith("delta_"))
 
     def bindable(self, params: Mapping | None) -> dict:
@@ -570,7 +571,7 @@ def _check_inputs(T, V, specs, presc, P, D, F, coords, problems) -> None:
                             "motion is differentiated twice; give it as an expression of t")
     names = {coordinate_name(q) for q in coords}
     used = inputs_in([P, D, *F.values()])
-    others = set().union(*(sp.sympify(e).free_symbols for e in (T, V, P, D, *F.values())))
+    others = set().union(*(_sympify(e).free_symbols for e in (T, V, P, D, *F.values())))
     clash_params = {s.name for s in others if not is_input(s)}
     for u in sorted(used, key=str):
         if u.name in names or u.name.removesuffix(VELOCITY_SUFFIX) in names:
@@ -590,7 +591,7 @@ def _not_a_coordinate(c) -> str:
 
 def _substitute_constraint(c, presc):
     def sub(x):
-        return sp.sympify(x).subs(presc).doit()
+        return _sympify(x).subs(presc).doit()
 
     if isinstance(c, (Holonomic, Nonholonomic)):
         return type(c)(sub(c.expr), c.name, *((c.unilateral,) if isinstance(c, Holonomic) else ()))
@@ -604,7 +605,7 @@ def _substitute_forces(forces, presc):
     frozen = {virtual_displacement(k): 0 for k in presc}
 
     def sub(x):
-        return sp.sympify(x).subs(presc).doit().subs(frozen)
+        return _sympify(x).subs(presc).doit().subs(frozen)
 
     items = forces if isinstance(forces, (list, tuple)) else [forces]
     out = []

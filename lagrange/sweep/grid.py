@@ -45,7 +45,13 @@ def _values(over: Mapping[str, Sequence[float]]) -> dict[str, np.ndarray]:
         raise SweepError("nothing to sweep: `over` must name at least one quantity with its values")
     out, problems = {}, []
     for name, vals in over.items():
-        arr = np.atleast_1d(np.asarray(vals, dtype=float)) if not isinstance(vals, str) else parse_range(vals)
+        try:
+            arr = np.atleast_1d(np.asarray(vals, dtype=float)) if not isinstance(vals, str) else parse_range(vals)
+        except (TypeError, ValueError) as exc:  # a string among the values is refused, never evaluated
+            if isinstance(exc, SweepError):
+                raise
+            problems.append(f"{name}: values must be numbers ({exc})")
+            continue
         if arr.ndim != 1 or arr.size == 0:
             problems.append(f"{name}: give a non-empty 1-D sequence of values")
         elif not np.all(np.isfinite(arr)):

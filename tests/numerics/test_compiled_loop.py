@@ -210,18 +210,22 @@ def test_two_models_share_one_compiled_loop(oscillator, double_pendulum):
 
 
 def test_loop_and_field_are_written_to_numba_cache(oscillator):
-    """After a run, numba's on-disk index of the loops (a copy of _rk_loops.py in the lagrange cache directory)
-    and of the model's eagerly compiled `field` exist."""
-    from lagrange.codegen.numba_backend import cache_dir
+    """After a run, numba's on-disk index of the loops (a staged copy of _rk_loops.py) and of the model's
+    eagerly compiled `field` exist, and are sealed into the cache directory's bundles."""
+    from lagrange.codegen import numba_backend as nb
+    from lagrange.codegen.cache import cache_dir, read_verified
     from lagrange.integrate.compiled import loops
 
     s, model, p, ic = oscillator
     s.simulate(1, ic, p, model=model, loop="compiled")
     module = Path(loops().__file__)
-    assert module.parent == cache_dir() and module.read_text() == (
+    assert module.parent != cache_dir() and module.read_text() == (
         Path(__file__).parents[2] / "lagrange" / "integrate" / "_rk_loops.py").read_text()
+    nb.harvest(module)
+    sealed = [name for name, _ in nb._unpack(read_verified(cache_dir() / f"{module.stem}.numba"), module.stem)]
     for name in ("dop853", "rk45"):
         assert list(Path(getattr(loops(), name).stats.cache_path).glob(f"{module.stem}.{name}-*.nbi"))
+        assert any(n.startswith(f"{module.stem}.{name}-") and n.endswith(".nbi") for n in sealed)
     field = model.dynamics.py_func.__globals__["field"]
     rhs_module = Path(field.py_func.__code__.co_filename)
     assert "def dop853" not in rhs_module.read_text()  # the model module holds only the model
