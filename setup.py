@@ -8,8 +8,13 @@ import sys
 
 from setuptools import Extension, setup
 
-_FLAGS = [] if sys.platform == "win32" else ["-std=c99", "-ffp-contract=off"]
 
-setup(ext_modules=[Extension("lagrange.integrate._ctaylor", sources=["lagrange/integrate/_taylor_interp.c"],
-                             define_macros=[("LAGRANGE_PY_EXTENSION", "1")], extra_compile_args=_FLAGS,
-                             optional=True)])
+def extensions() -> list:
+    """``lagrange.integrate._ctaylor``: the tape interpreter with an empty module init (called via ctypes)."""
+    flags = [] if sys.platform == "win32" else ["-std=c99", "-ffp-contract=off"]
+    return [Extension("lagrange.integrate._ctaylor", sources=["lagrange/integrate/_taylor_interp.c"],
+                      define_macros=[("LAGRANGE_PY_EXTENSION", "1")], extra_compile_args=flags, optional=True)]
+
+
+if __name__ == "__main__":  # setuptools' build backend runs this file as __main__
+    setup(ext_modules=extensions())

@@ -1,10 +1,11 @@
-"""The three ways to run a Taylor tape, side by side in one run (issue #22 item 6): which to keep.
+"""The ways to run a Taylor tape, side by side in one run (issue #22 item 6): which to keep.
 
 Engines (same tape, same order, same step rule):
 
 * ``c``      — the interpreter in C (``lagrange.integrate.c_taylor``), called through ctypes;
-* ``numba``  — the same interpreter compiled by numba (``_taylor_loop.taylor``);
-* ``series`` — the tape written out as straight-line code and JIT-compiled per model (``backend="numba"``).
+* ``series`` — the tape written out as straight-line code and JIT-compiled per model (``backend="numba"``);
+* ``numba``  — the same interpreter as C compiled by numba: retired after this measurement; measured only when
+  the checked-out code still has it (``_taylor_loop.taylor``, up to commit 191ee35), skipped otherwise.
 
 Per problem and tolerance: the setup cost paid once (first call in this process: loading/compiling the engine,
 plus the per-model JIT of the series) and the median CPU and wall time of a warm run, interleaved
@@ -70,7 +71,9 @@ def main(argv=None) -> int:
 
     rounds = args.rounds or (5 if args.quick else 9)
     tols = (1e-9, 1e-13) if args.quick else (1e-6, 1e-9, 1e-13)
-    engines = ("c", "numba", "series")
+    from lagrange.integrate import taylor as tay
+
+    engines = ("c", "numba", "series") if "numba" in getattr(tay, "ENGINES", ("numba",)) else ("c", "series")
     lines = ["# Taylor engines side by side", "",
              f"{platform.processor() or platform.machine()}, {os.cpu_count()} cores (shared), "
              f"{time.strftime('%Y-%m-%d %H:%M UTC', time.gmtime())}; rounds interleaved: {rounds}; "

@@ -35,7 +35,8 @@ from .cse import fuse
 
 __all__ = ["Tape", "TapeError", "build_tape", "tape_of", "OPCODES"]
 
-#: opcode numbers, shared with :mod:`lagrange.integrate._taylor_loop`
+#: opcode numbers, shared with the C interpreter (:file:`lagrange/integrate/_taylor_interp.c`) and
+#: :mod:`lagrange.integrate._taylor_loop`
 OPCODES = dict(zip(("LOADC", "LOADP", "ADD", "ADDC", "SUB", "SUBVC", "SUBCV", "MUL", "MULC", "DIV", "DIVVC",
                     "DIVCV", "NEG", "SINCOS", "EXP", "LOG", "POW"), range(17)))
 _O = OPCODES

@@ -22,7 +22,7 @@ import math
 import numpy as np
 
 from ..codegen.numeric import NumericModel
-from ..errors import IntegrationError
+from ..errors import InputError, IntegrationError
 from ..results.trajectory import Trajectory
 from .compiled import MAX_STEPS, check_output_times
 
@@ -41,7 +41,7 @@ def integrate_heyoka(model: NumericModel, t_span, y0, t_eval, *, rtol: float, at
         heyoka is not installed (the message names the extra).
     TapeError
         Constraints or a non-analytic function in the equations (named).
-    TypeError
+    InputError
         The model has time-varying inputs (a schedule), which heyoka cannot call.
     ValueError
         Bad tolerances or ``t_eval`` (as scipy words them).
@@ -49,7 +49,8 @@ def integrate_heyoka(model: NumericModel, t_span, y0, t_eval, *, rtol: float, at
         heyoka stopped early (non-finite state, step limit); ``partial`` holds the outputs reached.
     """
     if model.schedule is not None:
-        raise TypeError("method='heyoka' cannot follow time-varying inputs (a schedule): use method='DOP853'")
+        raise InputError("method='heyoka' cannot follow time-varying inputs (the model has a schedule; constant "
+                         "inputs are parameters): use method='DOP853' or another scipy method")
     odes = model.heyoka_taylor()
     t0, t1 = float(t_span[0]), float(t_span[1])
     rtol, atol, max_step = float(rtol), float(atol), float(max_step)

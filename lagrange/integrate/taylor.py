@@ -41,7 +41,7 @@ import time
 import numpy as np
 
 from ..codegen.numeric import NumericModel
-from ..errors import BackendError
+from ..errors import BackendError, InputError
 from ..results.trajectory import Trajectory
 from .compiled import MAX_STEPS, LoopStatus, check_output_times, first_class, kernel, stopped_error
 
@@ -194,6 +194,8 @@ def integrate_taylor(model: NumericModel, t_span, y0, t_eval, *, rtol: float, at
         Constraints or a non-analytic function in the equations (named).
     BackendError
         No way to run the tape here (no C compiler and no numba).
+    InputError
+        The model has time-varying inputs (a schedule): the tape holds inputs as constants.
     IntegrationError
         The run stopped early (singular mass matrix, non-finite coefficients, collapsed step, too many
         steps); ``t``, ``state`` and ``partial`` say where and what was computed.
@@ -201,6 +203,9 @@ def integrate_taylor(model: NumericModel, t_span, y0, t_eval, *, rtol: float, at
         Ctrl-C, answered within about :data:`CHUNK_SECONDS`; its ``partial`` attribute is the trajectory up
         to there.
     """
+    if model.schedule is not None:  # the tape holds the inputs as constants: never run as if they were absent
+        raise InputError("method='taylor' cannot follow time-varying inputs (the model has a schedule; constant "
+                         "inputs are parameters): use method='DOP853' or another scipy method")
     tape = model.taylor_tape()
     t0, t1 = float(t_span[0]), float(t_span[1])
     rtol, atol, max_step = float(rtol), float(atol), float(max_step)

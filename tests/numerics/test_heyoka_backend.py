@@ -124,3 +124,25 @@ def test_missing_heyoka_names_the_extra(monkeypatch):
     with pytest.raises(BackendError, match=r'pip install "lagrange-dynamics\[heyoka\]"') as info:
         integrate_heyoka(model, (0, 1), np.array([0.1, 0.0]), [1.0], rtol=1e-9, atol=1e-9)
     assert isinstance(info.value, LagrangeError)
+
+
+@pytest.mark.parametrize("which", ["heyoka", "taylor"])
+def test_time_varying_inputs_are_refused_not_dropped(which):
+    """A model driven by a schedule u(t): both Taylor routes hold inputs as constants, so they refuse it
+    (InputError, a TypeError) instead of integrating as if the input were absent."""
+    import lagrange as lg
+    from lagrange.codegen.input_values import resolve_inputs
+    from lagrange.errors import InputError
+    from lagrange.integrate.taylor import integrate_taylor
+
+    if which == "heyoka":
+        _hy()
+    x = coordinates("x")
+    F = lg.inputs("F")
+    s = System([x], T=x.diff(t) ** 2 / 2, V=x**2 / 2, forces={x: F})
+    model = s.compile({}, inputs={F: 0.0})
+    _, schedule = resolve_inputs(s.derived, {F: lambda tt: math.cos(tt)}, (0.0, 1.0), np.zeros(2))
+    assert schedule is not None
+    run = integrate_heyoka if which == "heyoka" else integrate_taylor
+    with pytest.raises(InputError, match=f"method='{which}' cannot follow time-varying inputs"):
+        run(model.with_schedule(schedule), (0.0, 1.0), np.zeros(2), [1.0], rtol=1e-9, atol=1e-9)

@@ -95,10 +95,22 @@ def test_the_extension_module_builds_and_runs(tmp_path):
     directory, importable as a module, and its interpreter integrates Kepler's orbit correctly."""
     if c_interpreter.compiler() is None:
         pytest.skip("no C compiler here")
-    proc = subprocess.run([sys.executable, "setup.py", "-q", "build_ext", "--build-lib", str(tmp_path),
-                           "--build-temp", str(tmp_path / "tmp")], cwd=ROOT, capture_output=True, text=True,
-                          timeout=300)
-    assert proc.returncode == 0, proc.stderr[-2000:]
+    import runpy
+
+    from setuptools import Distribution
+
+    extensions = runpy.run_path(str(ROOT / "setup.py"), run_name="setup_probe")["extensions"]()
+    assert [e.name for e in extensions] == ["lagrange.integrate._ctaylor"] and extensions[0].optional
+    dist = Distribution({"ext_modules": extensions, "script_name": "setup.py", "src_root": str(ROOT)})
+    cmd = dist.get_command_obj("build_ext")
+    cmd.build_lib, cmd.build_temp = str(tmp_path), str(tmp_path / "tmp")
+    cwd = os.getcwd()
+    os.chdir(ROOT)  # the sources are relative to the project root, as in a build
+    try:
+        cmd.ensure_finalized()
+        cmd.run()
+    finally:
+        os.chdir(cwd)
     built = list((tmp_path / "lagrange" / "integrate").glob("_ctaylor*"))
     assert len(built) == 1
     import importlib.util
@@ -124,9 +136,10 @@ print("started", flush=True)
 try:
     integrate_taylor(model, (0, T), kepler_state([0.0])[0], tt, rtol=1e-15, atol=1e-15, engine=engine)
 except KeyboardInterrupt as exc:
+    caught = time.time()
     part = exc.partial
     ok = part is not None and not part.success and np.all(np.isfinite(part.y))
-    print("interrupted", len(part.t), part.message, ok, flush=True)
+    print("interrupted", len(part.t), part.message, ok, caught, flush=True)
     sys.exit(0)
 print("finished?", flush=True)
 sys.exit(3)
@@ -146,19 +159,20 @@ def test_ctrl_c_stops_a_long_taylor_run_promptly(engine):
         pytest.importorskip("numba")
     env = dict(os.environ, PYTHONPATH=os.pathsep.join([str(ROOT / ".pp"), str(ROOT)]))
     proc = subprocess.Popen([sys.executable, "-c", _CHILD, engine], env=env, stdout=subprocess.PIPE,
-                            stderr=subprocess.PIPE, text=True)
+                            stderr=subprocess.PIPE, text=True,  # Ctrl-C as from a terminal, even when this
+                            preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))  # runs in background
     try:
         assert proc.stdout.readline().strip() == "started"
         time.sleep(2.0)
         assert proc.poll() is None  # still integrating
-        sent = time.monotonic()
+        sent = time.time()
         proc.send_signal(signal.SIGINT)
-        out, err = proc.communicate(timeout=60)
-        latency = time.monotonic() - sent
+        out, err = proc.communicate(timeout=120)
     finally:
         if proc.poll() is None:
             proc.kill()
     assert proc.returncode == 0, err[-2000:]
     words = out.split()
-    assert words[0] == "interrupted" and int(words[1]) >= 1 and "Ctrl-C" in out and words[-1] == "True"
-    assert latency < 15.0, latency  # generous on a loaded 2-core machine; typically well under a second
+    assert words[0] == "interrupted" and int(words[1]) >= 1 and "Ctrl-C" in out and words[-2] == "True"
+    latency = float(words[-1]) - sent  # signal sent -> KeyboardInterrupt caught in the child
+    assert latency < 5.0, latency  # generous on a loaded 2-core machine; the chunks last about 0.1 s
