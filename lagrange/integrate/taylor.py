@@ -226,7 +226,9 @@ def integrate_taylor(model: NumericModel, t_span, y0, t_eval, *, rtol: float, at
         code, t_end, z_end, Y, n_out, steps = _run(how, model, tape, t0, t1, z0, p, atol / rtol, order, max_step,
                                                    t_eval, int(max_steps))
     except KeyboardInterrupt as exc:
-        t_end, z_end, Y, n_out, steps = exc._lagrange_partial
+        # interrupted while the engine was being loaded or compiled, nothing integrated yet: an empty partial
+        nothing = (t0, z0, np.empty((t_eval.size, tape.nz)), 0, 0)
+        t_end, z_end, Y, n_out, steps = getattr(exc, "_lagrange_partial", nothing)
         exc.partial = _trajectory(model, tape, t_eval, Y, n_out, y0, t0, label, order, steps,
                                   f"interrupted (Ctrl-C) at t={t_end:.9g}", False)
         raise

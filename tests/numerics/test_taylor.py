@@ -378,3 +378,33 @@ def test_without_a_c_interpreter_the_compiled_series_runs(monkeypatch):
         interpreter("numba")
     monkeypatch.undo()
     c_interpreter.forget()
+
+
+def test_an_interrupt_between_chunks_carries_the_exact_partial_trajectory(monkeypatch):
+    """KeyboardInterrupt raised between chunks (where Ctrl-C's handler runs) reaches the caller with
+    ``partial``: the outputs computed so far, each on Kepler's closed form; raised before anything was
+    integrated (while an engine loads), an empty partial."""
+    from lagrange.integrate import taylor as tay
+
+    model = kepler_system().compile({"m": 1.0, "mu": 1.0})
+    tt = np.linspace(0, 60.0, 121)
+    calls = {"n": 0}
+    record = tay._Chunks.record
+
+    def interrupted_after_three(self, steps, seconds):
+        record(self, steps, seconds)
+        calls["n"] += 1
+        if calls["n"] == 3:
+            raise KeyboardInterrupt
+
+    monkeypatch.setattr(tay, "CHUNK_SECONDS", 1e-12)  # one step per chunk
+    monkeypatch.setattr(tay._Chunks, "record", interrupted_after_three)
+    with pytest.raises(KeyboardInterrupt) as info:
+        tay.integrate_taylor(model, (0, 60.0), kepler_state([0.0])[0], tt, rtol=1e-12, atol=1e-12)
+    part = info.value.partial
+    assert not part.success and "Ctrl-C" in part.message and 1 <= len(part.t) < len(tt)
+    assert np.max(np.abs(part.y - kepler_state(part.t))) < 1e-9
+    monkeypatch.setattr(tay, "_run", lambda *a: (_ for _ in ()).throw(KeyboardInterrupt()))
+    with pytest.raises(KeyboardInterrupt) as info:
+        tay.integrate_taylor(model, (0, 60.0), kepler_state([0.0])[0], tt, rtol=1e-12, atol=1e-12)
+    assert len(info.value.partial.t) == 0
