@@ -36,7 +36,8 @@ def test_kepler_against_keplers_equation_forward_and_backward():
         assert np.max(np.abs(sol.y - kepler_state(tt))) < 1e-11
 
 
-@pytest.mark.parametrize("name", ["pendulum", "double_pendulum", "kepler", "top"])
+@pytest.mark.parametrize("name", ["pendulum", "double_pendulum", "kepler",
+                                  pytest.param("top", marks=pytest.mark.slow)])
 def test_agrees_with_the_projects_taylor_method_at_tight_tolerance(name):
     """Two Taylor integrators of the same equations (different code, LLVM vs the C interpreter) agree at
     rtol = 1e-14 on the benchmark problems, at every output time."""

@@ -281,8 +281,13 @@ def _run(engine, system, params, y0, t_span, t_eval, tol):
         return exc
 
 
-@pytest.mark.parametrize("engine", ["c", "series"])
-@pytest.mark.parametrize("case", ["every_operation", "kepler_backward", "damped"])
+_SLOW_SERIES = pytest.param("series", marks=pytest.mark.slow)  # a JIT compile per model: in the slow set
+
+
+@pytest.mark.parametrize(("engine", "case"), [
+    ("c", "every_operation"), ("c", "kepler_backward"), ("c", "damped"), ("series", "damped"),
+    pytest.param("series", "every_operation", marks=pytest.mark.slow),
+    pytest.param("series", "kepler_backward", marks=pytest.mark.slow)])
 def test_each_engine_against_independent_truth(engine, case):
     """Kepler's equation (backward in time), the damped oscillator's closed form and its dissipated work, and
     every tape operation against DOP853 at rtol 1e-13 — for each engine on its own."""
@@ -312,7 +317,7 @@ def test_each_engine_against_independent_truth(engine, case):
         assert np.max(np.abs(run.work - work)) < 1e-9
 
 
-@pytest.mark.parametrize("engine", ["c", "series"])
+@pytest.mark.parametrize("engine", ["c", _SLOW_SERIES])
 def test_each_engine_stops_where_the_closed_form_says(engine):
     """Faults, located by the closed form: V = −x⁴/4 blows up at t = √2; with T = (1 − x)ẋ²/2 and energy 1/2
     the mass 1 − x vanishes at t = 2/3. The partial trajectory ends before it, and each output is exact."""
