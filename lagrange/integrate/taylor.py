@@ -141,6 +141,17 @@ class _Chunks:
             self.size = int(min(max(CHUNK_SECONDS / per_step, 1), 4 * self.size + 1, 10**7))
 
 
+def _reraise_interrupt(exc: BaseException) -> None:
+    """Raise KeyboardInterrupt when ``exc`` was caused by one: numba's boxing of a compiled call's results runs
+    Python code, and a Ctrl-C handled there comes back as ``SystemError`` (the chunk's results are lost; the
+    partial trajectory is the one before the chunk)."""
+    seen = exc.__cause__ or exc.__context__
+    while seen is not None:
+        if isinstance(seen, KeyboardInterrupt):
+            raise KeyboardInterrupt from exc
+        seen = seen.__cause__ or seen.__context__
+
+
 def _run(engine: str, model: NumericModel, tape, t0, t1, z0, p, floor, order, max_step, t_eval, max_steps):
     """``(status, t reached, z reached, Y, n_out, steps)``: the whole run, in interruptible chunks. On
     KeyboardInterrupt the exception carries ``_lagrange_partial = (t, z, Y, n_out, steps)``."""
@@ -157,9 +168,13 @@ def _run(engine: str, model: NumericModel, tape, t0, t1, z0, p, floor, order, ma
         series = first_class(model.taylor_series(order), k.SERIES)
 
         def chunk(t, z, first, n):
-            status, t_new, z_new, Yc, k_out, steps = fn(series, tape.const_code, tape.const_vals, tape.n_slots,
-                                                        tape.n, tape.nz, t, t1, z, p, floor, order, max_step,
-                                                        t_eval[first:], n)
+            try:
+                status, t_new, z_new, Yc, k_out, steps = fn(series, tape.const_code, tape.const_vals, tape.n_slots,
+                                                            tape.n, tape.nz, t, t1, z, p, floor, order, max_step,
+                                                            t_eval[first:], n)
+            except SystemError as exc:  # Ctrl-C's handler ran inside numba's boxing (Python code): unwrap it
+                _reraise_interrupt(exc)
+                raise
             Y[first:first + k_out] = Yc[:k_out]
             return status, t_new, z_new, k_out, steps
 

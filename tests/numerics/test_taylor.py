@@ -413,3 +413,17 @@ def test_an_interrupt_between_chunks_carries_the_exact_partial_trajectory(monkey
     with pytest.raises(KeyboardInterrupt) as info:
         tay.integrate_taylor(model, (0, 60.0), kepler_state([0.0])[0], tt, rtol=1e-12, atol=1e-12)
     assert len(info.value.partial.t) == 0
+
+
+def test_a_ctrl_c_wrapped_by_numba_comes_back_as_keyboard_interrupt():
+    """numba boxes a compiled call's results in Python code; Ctrl-C handled there surfaces as SystemError
+    caused by KeyboardInterrupt (seen in the SIGINT test of the compiled series): unwrapped, other
+    SystemErrors left alone."""
+    from lagrange.integrate.taylor import _reraise_interrupt
+
+    wrapped = SystemError("returned a result with an exception set")
+    wrapped.__cause__ = SystemError("inner")
+    wrapped.__cause__.__cause__ = KeyboardInterrupt()
+    with pytest.raises(KeyboardInterrupt):
+        _reraise_interrupt(wrapped)
+    assert _reraise_interrupt(SystemError("unrelated")) is None
