@@ -67,6 +67,7 @@ def test_a_damaged_library_is_detected_and_rebuilt(private_cache, how):
     assert sorted(p.name for p in private_cache.iterdir()) == [path.name, path.name + ".sha256"]  # no temp files
 
 
+@pytest.mark.slow  # a new process imports and derives (several seconds); the in-process tests run by default
 def test_a_truncated_library_does_not_kill_a_new_process(private_cache):
     """The crash of issue #21: a truncated ctaylor_*.so made every method='taylor' run die with SIGBUS."""
     path, _ = c_interpreter.library_path_or_reason()
