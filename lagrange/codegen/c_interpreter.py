@@ -154,7 +154,8 @@ def _runtime_library() -> str:
             if target.exists():
                 from ..progress import note
 
-                note(f"the cached C Taylor interpreter {target.name} does not match its seal (damaged): rebuilt")
+                note(f"the cached C Taylor interpreter {target.name} does not match its seal (damaged, or built "
+                     "before libraries were sealed): rebuilt")
                 target.unlink(missing_ok=True)
             else:
                 from ..progress import note
