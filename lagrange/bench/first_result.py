@@ -50,8 +50,8 @@ ROUTES = {
     "compiled_primed": "lagrange, numba compiled loop, DOP853, loops compiled by an earlier process (new model)",
     "taylor": "lagrange, taylor (interpreted tape), empty caches: includes the one-time build of the interpreter",
     "taylor_primed": "lagrange, taylor (interpreted tape), interpreter built by an earlier process (new model)",
-    "taylor_numba_primed": "lagrange, taylor (tape interpreted by numba, no C), kernel compiled by an earlier "
-                           "process (new model)",
+    "taylor_numba_primed": "lagrange, taylor without C (the compiled series: numba JIT of the new model's "
+                           "series), driver compiled by an earlier process",
     "python_rerun": "lagrange, python backend, DOP853, re-run (derivation and code from the on-disk cache)",
     "python_auto": "lagrange, python backend, method='auto' (its pick in the label note)",
     "taylor_rerun": "lagrange, taylor (interpreted tape), re-run (derivation, code and interpreter cached)",
@@ -63,15 +63,14 @@ ROUTES = {
 
 
 #: what an earlier process leaves in the cache for the ``*_primed`` routes: the generic kernels only
-_PRIME = {"taylor_primed": "from lagrange.integrate.taylor import interpreter; from lagrange.integrate.c_taylor "
-                           "import library; from lagrange.integrate.compiled import kernel; library() if "
-                           "interpreter() == 'c' else "
-                           "kernel('_taylor_loop.py', 'taylorloop', 'taylor').entry('taylor')",
+_PRIME = {"taylor_primed": "from lagrange.integrate.taylor import interpreter; from lagrange.integrate.compiled "
+                           "import kernel; interpreter() == 'c' or "
+                           "kernel('_taylor_loop.py', 'taylorloop', 'taylor').entry('taylor_fn')",
           "taylor_numba_primed": "from lagrange.integrate.compiled import kernel; "
-                                 "kernel('_taylor_loop.py', 'taylorloop', 'taylor').entry('taylor')",
+                                 "kernel('_taylor_loop.py', 'taylorloop', 'taylor').entry('taylor_fn')",
           "compiled_primed": "from lagrange.integrate.compiled import loops; loops()"}
 
-#: routes that run the numba build of the tape interpreter even where a C compiler is available
+#: routes that run the compiled series (numba) even where a C interpreter is available
 _NO_C = ("taylor_numba_primed",)
 
 

@@ -65,7 +65,7 @@ def _c_compiler() -> str | None:
     """The first line of ``--version`` of the compiler that builds the C Taylor interpreter, or None."""
     import subprocess
 
-    from ..integrate.c_taylor import compiler
+    from ..codegen.c_interpreter import compiler
 
     cc = compiler()
     if cc is None:

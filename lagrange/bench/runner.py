@@ -135,7 +135,7 @@ def method_specs(problem: BenchProblem, *, quick: bool = False, heyoka: bool = T
 
     engine = available_interpreter()
     if not friction and engine:  # dry friction (sign) is not analytic: no Taylor series
-        specs.append(MethodSpec(f"taylor python (tape interpreted {'in C' if engine == 'c' else 'by numba'})",
+        specs.append(MethodSpec(f"taylor python ({'tape interpreted in C' if engine == 'c' else 'compiled series'})",
                                 method="taylor"))
         if not quick and _numba_ok():
             specs.append(MethodSpec("taylor numba (compiled series)", method="taylor", backend="numba"))
@@ -228,10 +228,10 @@ class _Runner:
 
         def make(tol):
             if s.method == "taylor" and model.backend == "numba":  # the series for this order: JIT is setup
-                from ..integrate.taylor import compiled_series, tape_of, taylor_order
+                from ..integrate.taylor import taylor_order
 
                 t0 = time.perf_counter()
-                compiled_series(tape_of(model.equations), taylor_order(tol))
+                model.taylor_series(taylor_order(tol))
                 self.setup += time.perf_counter() - t0
 
             def run():

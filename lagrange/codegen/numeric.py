@@ -338,6 +338,36 @@ class NumericModel:
         out["energy"] = out["T"] + out["V"]
         return out
 
+    # --- what the Taylor method and the heyoka backend consume, produced by codegen on request ---------------
+    def taylor_tape(self):
+        """The Taylor tape of the equations (:func:`lagrange.codegen.tape.tape_of`; built once per Equations).
+        Raises :class:`~lagrange.codegen.tape.TapeError` for constraints or a non-analytic function."""
+        from .tape import tape_of
+
+        return tape_of(self.equations)
+
+    def taylor_series(self, order: int | None = None):
+        """The tape's numba-compiled ``series`` for ``order`` (:func:`lagrange.codegen.taylor_source.
+        compiled_series`; cached on disk). Raises BackendError without numba."""
+        from .taylor_source import compiled_series
+
+        return compiled_series(self.taylor_tape(), order)
+
+    @staticmethod
+    def taylor_interpreter():
+        """``(path, None)`` of the C Taylor interpreter library, or ``(None, reason)``
+        (:func:`lagrange.codegen.c_interpreter.library_path_or_reason`)."""
+        from .c_interpreter import library_path_or_reason
+
+        return library_path_or_reason()
+
+    def heyoka_taylor(self):
+        """The model's equations as heyoka expressions (:func:`lagrange.codegen.heyoka_expr.heyoka_odes`;
+        built once per Equations). Raises BackendError without heyoka or for what heyoka cannot take."""
+        from .heyoka_expr import heyoka_odes
+
+        return heyoka_odes(self.equations)
+
 
 def _reference_functions(eqs: Equations):
     ren = rename_map(eqs)

@@ -2,7 +2,9 @@ r"""A model's right-hand side as a *tape*: straight-line elementary operations o
 
 The tape is what the Taylor integrator (:mod:`lagrange.integrate.taylor`) interprets: no code is generated
 or compiled per model, so a new model costs only its derivation and this translation (milliseconds), and
-the interpreter (:mod:`lagrange.integrate._taylor_loop`) is compiled once per machine.
+the interpreter (:file:`lagrange/integrate/_taylor_interp.c`) is compiled once per machine (or at install
+time). The integrator reaches it through the compiled model (:meth:`NumericModel.taylor_tape
+<lagrange.codegen.numeric.NumericModel.taylor_tape>`).
 
 Built from the same CSE as every backend (:func:`lagrange.codegen.cse.fuse`: M's upper triangle, f and,
 for non-conservative systems, the power dh/dt of the work integral). Slots::
@@ -21,6 +23,7 @@ analytic right-hand side (use an adaptive Runge–Kutta method for those systems
 
 from __future__ import annotations
 
+import weakref
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -30,9 +33,10 @@ from ..derive.equations import Equations
 from ..errors import LagrangeError
 from .cse import fuse
 
-__all__ = ["Tape", "TapeError", "build_tape", "OPCODES"]
+__all__ = ["Tape", "TapeError", "build_tape", "tape_of", "OPCODES"]
 
-#: opcode numbers, shared with :mod:`lagrange.integrate._taylor_loop`
+#: opcode numbers, shared with the C interpreter (:file:`lagrange/integrate/_taylor_interp.c`) and
+#: :mod:`lagrange.integrate._taylor_loop`
 OPCODES = dict(zip(("LOADC", "LOADP", "ADD", "ADDC", "SUB", "SUBVC", "SUBCV", "MUL", "MULC", "DIV", "DIVVC",
                     "DIVCV", "NEG", "SINCOS", "EXP", "LOG", "POW"), range(17)))
 _O = OPCODES
@@ -281,3 +285,13 @@ def build_tape(eqs: Equations) -> Tape:
     code, consts = arrays([r for r in b.rows if r[0]])
     return Tape(n=n, nz=nz, n_slots=b.next_slot, slot_t=slot_t, const_code=const_code, const_vals=const_vals,
                 code=code, consts=consts, mass=mass, force=force, power=power)
+
+
+_TAPES: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
+
+
+def tape_of(eqs: Equations) -> Tape:
+    """:func:`build_tape` of ``eqs``, built once per Equations (equal equations share it)."""
+    if eqs not in _TAPES:
+        _TAPES[eqs] = build_tape(eqs)
+    return _TAPES[eqs]

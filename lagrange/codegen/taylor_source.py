@@ -2,8 +2,8 @@ r"""A model's Taylor-series function as straight-line numba source: the compiled
 ``method="taylor"`` (``backend="numba"``).
 
 The tape (:mod:`lagrange.codegen.tape`) is written out instruction by instruction with literal slot
-numbers, the recurrences of :mod:`lagrange.integrate._taylor_loop` inlined (same arithmetic in the same
-order, so the results equal the interpreter's), constant mass-matrix entries dropped from the order-k
+numbers, the recurrences of the C interpreter (:file:`lagrange/integrate/_taylor_interp.c`) inlined (same
+arithmetic in the same order), constant mass-matrix entries dropped from the order-k
 sums (their higher coefficients are zero)::
 
     series(t, S, acc, L, d, Mk, r, p_order) -> ok
@@ -28,9 +28,12 @@ the sign of an exact zero).
 
 from __future__ import annotations
 
+import weakref
+
 from .tape import OPCODES, Tape
 
-__all__ = ["series_source", "unrolled_source", "unrolled_terms", "SERIES_SIGNATURE", "UNROLL_TERMS"]
+__all__ = ["series_source", "unrolled_source", "unrolled_terms", "compiled_series", "SERIES_SIGNATURE",
+           "UNROLL_TERMS"]
 
 SERIES_SIGNATURE = ("boolean(float64, float64[:, ::1], float64[:, ::1], float64[:, ::1], float64[::1], "
                     "float64[:, ::1], float64[::1], int64)")
@@ -256,3 +259,25 @@ def _unrolled_solve(tape: Tape, k: int, v, variable: set) -> list[str]:
     if tape.power >= 0:
         lines.append(f"v{2 * n}_{k + 1} = {v(tape.power, k)} * {inv}")
     return lines
+
+
+_SERIES: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
+
+
+def compiled_series(tape: Tape, order: int | None = None):
+    """The tape's ``series`` compiled by numba once per model and cached on disk like the other generated
+    modules: written out for ``order`` (:func:`unrolled_source`) when that stays within :data:`UNROLL_TERMS`
+    terms, else the loop form (:func:`series_source`, any order).
+
+    Raises :class:`~lagrange.errors.BackendError` when numba is missing or the compilation fails."""
+    cached = _SERIES.setdefault(tape, {})  # order (None: the loop form) -> compiled series
+    if order not in cached:
+        from .numba_backend import _require_numba, load_cached
+
+        _require_numba("method='taylor' (the compiled series)")
+        if order is not None and unrolled_terms(tape, order) <= UNROLL_TERMS:
+            cached[order] = load_cached("taylor", unrolled_source(tape, order), "the Taylor series module").series
+        else:
+            cached[order] = cached[None] = cached.get(None) or load_cached("taylor", series_source(tape),
+                                                                          "the Taylor series module").series
+    return cached[order]

@@ -1,16 +1,24 @@
-/* The tape interpreter of method="taylor" in C: lagrange.integrate._taylor_loop.taylor, line for line.
+/* The tape interpreter of method="taylor" in C (the only interpreter; see docs/guide.md, "The Taylor method:
+   what is kept and why").
 
-   Built by lagrange.integrate.c_taylor with the machine's C compiler (once per machine, cached next to the
-   numba modules) and called through ctypes: loading it costs about a millisecond where numba's first call in
-   a process costs about 0.2 s, so a first result needs no numba at all. Same arithmetic in the same order as
-   the numba interpreter (no contraction into fused multiply-adds: -ffp-contract=off; the same libm), so the
-   two give identical results; the tests compare them bit for bit.
+   Built at install time as the optional extension module lagrange.integrate._ctaylor (setup.py; compiled with
+   -DLAGRANGE_PY_EXTENSION, which adds an empty module init) or, without it, by lagrange.codegen.c_interpreter
+   with the machine's C compiler (once per machine, cached and sealed next to the numba modules). Either way
+   it is called through ctypes (lagrange.integrate.c_taylor): loading it costs about a millisecond, so a first
+   result needs no numba at all. Same arithmetic in the same order as the compiled series
+   (lagrange.codegen.taylor_source; no contraction into fused multiply-adds: -ffp-contract=off).
+   At most max_steps steps per call (status 4): the caller runs long integrations in chunks and resumes from
+   (t_end, z_end), which gives the same result as one call, so Ctrl-C can be answered between chunks.
 
    Conventions (see _taylor_loop.py): S is n_slots x (p_order + 1), row-major, S[slot][k] the k-th normalized
    Taylor coefficient; instructions are rows (op, a, b, out) with one double constant each; status codes as
    lagrange.integrate.compiled.LoopStatus (0 success, 1 step too small, 2 non-finite, 3 division by zero,
    4 maximum number of steps, 5 out of memory). */
 
+#ifdef LAGRANGE_PY_EXTENSION
+#define PY_SSIZE_T_CLEAN
+#include <Python.h>
+#endif
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
@@ -199,6 +207,9 @@ static double step_size(const double *S, int64_t w, int64_t nz, int64_t p_order,
 
 /* Integrate from (t0, z0) to t1; outputs at t_eval (sorted in the direction of integration) into Y (n_eval x nz).
    Returns the status; *t_end, z_end (nz), *n_out and *steps say where it stopped. */
+#ifdef _WIN32
+__declspec(dllexport)
+#endif
 int64_t lagrange_taylor(const int64_t *const_code, const double *const_vals, int64_t n_const, const int64_t *code,
                         const double *consts, int64_t n_ins, int64_t n_slots, int64_t n, int64_t nz,
                         const int64_t *mass, const int64_t *force, int64_t power, int64_t slot_t, double t0, double t1,
@@ -264,3 +275,12 @@ int64_t lagrange_taylor(const int64_t *const_code, const double *const_vals, int
     *steps_ = steps;
     return status;
 }
+
+#ifdef LAGRANGE_PY_EXTENSION
+/* An extension module with no Python-level functions: the import system finds and installs it like any other
+   module; lagrange loads its file with ctypes and calls lagrange_taylor. */
+static struct PyModuleDef ctaylor_module = {PyModuleDef_HEAD_INIT, "_ctaylor",
+                                            "The C Taylor tape interpreter (called through ctypes).", -1, NULL};
+
+PyMODINIT_FUNC PyInit__ctaylor(void) { return PyModule_Create(&ctaylor_module); }
+#endif

@@ -1,4 +1,7 @@
-r"""The compiled Taylor integrator: an interpreter of a model's tape, compiled once per machine.
+r"""The driver of the compiled Taylor series (numba): step rule, dense output and bookkeeping around a model's
+``series`` (:mod:`lagrange.codegen.taylor_source`). The tape's interpreter is the C one
+(:file:`_taylor_interp.c`, which has the same arithmetic); the numba interpreter that used to live here was
+retired (docs/guide.md, "The Taylor method: what is kept and why").
 
 A model's right-hand side comes as a *tape* (:mod:`lagrange.codegen.tape`): a straight-line list of
 elementary operations on numbered slots. Each slot holds a truncated Taylor series in time,
@@ -36,8 +39,8 @@ criterion). There are no rejected steps. The output at ``t_eval`` is the Taylor 
 that contains it (the dense output is exact to the order of the method), so steps are never clipped to
 output times.
 
-The entry points :func:`taylor` (the interpreter) and :func:`taylor_fn` (a compiled series) are compiled on
-request through :func:`entry`.
+The entry point :func:`taylor_fn` is compiled on request through :func:`entry`; :func:`_coefficient` (the
+recurrences) runs the tape's constant instructions at order 0.
 
 The tape's instructions are rows ``(op, a, b, out)`` of an int64 array with one float64 constant each;
 *constant* instructions (parameters, numbers and what depends on them only) run once per integration at
@@ -60,15 +63,12 @@ LOADC, LOADP, ADD, ADDC, SUB, SUBVC, SUBCV, MUL, MULC, DIV, DIVVC, DIVCV, NEG, S
 
 _I2 = types.int64[:, ::1]
 _F1 = types.float64[::1]
-_I1 = types.int64[::1]
 #: ``(status, t reached, z reached, Y, n_out, steps)``
-TAYLOR = types.Tuple((types.int64, types.float64, _F1, types.float64[:, ::1], types.int64, types.int64))(
-    _I2, _F1, _I2, _F1, types.int64, types.int64, types.int64, _I2, _I1, types.int64, types.int64,
-    types.float64, types.float64, _F1, _F1, types.float64, types.int64, types.float64, _F1, types.int64)
+RESULT = types.Tuple((types.int64, types.float64, _F1, types.float64[:, ::1], types.int64, types.int64))
 _F2 = types.float64[:, ::1]
 #: a model's compiled ``series(t, S, acc, L, d, Mk, r, p_order) -> ok`` (lagrange.codegen.taylor_source)
 SERIES = types.boolean(types.float64, _F2, _F2, _F2, _F1, _F2, _F1, types.int64)
-TAYLOR_FN = TAYLOR.return_type(FunctionType(SERIES), _I2, _F1, types.int64, types.int64, types.int64, types.float64,
+TAYLOR_FN = RESULT(FunctionType(SERIES), _I2, _F1, types.int64, types.int64, types.int64, types.float64,
                                types.float64, _F1, _F1, types.float64, types.int64, types.float64, _F1, types.int64)
 
 
@@ -157,67 +157,6 @@ def _coefficient(op: int, a: int, b: int, o: int, c: float, S, k: int) -> None:
 
 
 @njit(cache=True, error_model="numpy")
-def _ldl(n: int, mass, S, Mk, L, d) -> bool:
-    """LDLᵀ of M_0 (upper slots ``mass``, −1 = structural zero) into unit-lower ``L`` and ``d``; False when a
-    pivot is not positive relative to its diagonal entry (1e-13), as in the generated code."""
-    for i in range(n):
-        for j in range(n):
-            s = mass[min(i, j), max(i, j)]
-            Mk[i, j] = S[s, 0] if s >= 0 else 0.0
-    for j in range(n):
-        dj = Mk[j, j]
-        for k in range(j):
-            dj -= L[j, k] * L[j, k] * d[k]
-        if not (dj > 1e-13 * abs(Mk[j, j])):
-            return False
-        d[j] = dj
-        L[j, j] = 1.0
-        for i in range(j + 1, n):
-            s = Mk[i, j]
-            for k in range(j):
-                s -= L[i, k] * L[j, k] * d[k]
-            L[i, j] = s / dj
-    return True
-
-
-@njit(cache=True, error_model="numpy")
-def _series(code, consts, n, slot_t, slot_w, mass, force, power, p_order, t, S, acc, L, d, Mk, r) -> bool:
-    """Taylor coefficients ``0..p_order`` of the state slots at time t (their order 0 set)."""
-    n_ins = code.shape[0]
-    S[slot_t, 0] = t
-    S[slot_t, 1] = 1.0
-    for k in range(p_order):
-        for i in range(n_ins):
-            _coefficient(code[i, 0], code[i, 1], code[i, 2], code[i, 3], consts[i], S, k)
-        if k == 0 and not _ldl(n, mass, S, Mk, L, d):
-            return False
-        for i in range(n):  # r = f_k − Σ_{j=1..k} M_j a_{k−j}
-            s = S[force[i], k]
-            for l_ in range(n):
-                m = mass[min(i, l_), max(i, l_)]
-                if m >= 0:
-                    for j in range(1, k + 1):
-                        s -= S[m, j] * acc[l_, k - j]
-            r[i] = s
-        for i in range(n):  # L D Lᵀ a_k = r
-            s = r[i]
-            for j in range(i):
-                s -= L[i, j] * r[j]
-            r[i] = s
-        for i in range(n - 1, -1, -1):
-            s = r[i] * (1.0 / d[i])
-            for j in range(i + 1, n):
-                s -= L[j, i] * acc[j, k]
-            acc[i, k] = s
-        for i in range(n):
-            S[i, k + 1] = S[n + i, k] * (1.0 / (k + 1))
-            S[n + i, k + 1] = acc[i, k] * (1.0 / (k + 1))
-        if slot_w >= 0:
-            S[slot_w, k + 1] = S[power, k] * (1.0 / (k + 1))
-    return True
-
-
-@njit(cache=True, error_model="numpy")
 def _horner(S, nz: int, p_order: int, x: float, out) -> None:
     for i in range(nz):
         v = S[i, p_order]
@@ -294,42 +233,15 @@ def _advance(S, nz, p_order, floor, rule, max_step, t, t1, direction, t_eval, n_
     return 0, t_new, n_out
 
 
-def taylor(const_code, const_vals, code, consts, n_slots, n, nz, mass, force, power, slot_t, t0, t1, z0, p,
-           floor, p_order, max_step, t_eval, max_steps):
-    """Integrate from ``(t0, z0)`` to ``t1``, interpreting the tape; outputs at ``t_eval`` (sorted in the
-    direction of integration).
-
-    ``const_code``/``const_vals``: instructions run once at order 0 (``LOADP`` reads ``p[a]``);
-    ``code``/``consts``: the state-dependent instructions; slots ``0..nz−1`` are the state (``nz = 2n`` or
-    ``2n + 1`` with the work integral, ``power`` its rate's slot), ``slot_t`` the time, ``mass`` (n, n) the
-    upper triangle of M (−1 = zero), ``force`` the slots of f. ``floor`` and ``p_order``: A and p of the
-    module docstring (the order carries the tolerance ε). Status codes as
-    :class:`lagrange.integrate.compiled.LoopStatus`.
-    """
-    S, acc, L, d, Mk, r = _constants(const_code, const_vals, n_slots, n, p_order, p)
-    rule = _step_rule(p_order)
-    z = z0.copy()
-    Y = np.empty((t_eval.size, nz))
-    slot_w = 2 * n if nz > 2 * n else -1
-    direction = 1.0 if t1 >= t0 else -1.0
-    t, n_out, steps = t0, 0, 0
-    while direction * (t - t1) < 0.0:
-        if steps >= max_steps:
-            return 4, t, z, Y, n_out, steps
-        S[:nz, 0] = z
-        if not _series(code, consts, n, slot_t, slot_w, mass, force, power, p_order, t, S, acc, L, d, Mk, r):
-            return 3, t, z, Y, n_out, steps
-        status, t, n_out = _advance(S, nz, p_order, floor, rule, max_step, t, t1, direction, t_eval, n_out, Y, z)
-        if status != 0:
-            return status, t, z, Y, n_out, steps
-        steps += 1
-    return 0, t, z, Y, n_out, steps
-
-
 def taylor_fn(series, const_code, const_vals, n_slots, n, nz, t0, t1, z0, p, floor, p_order, max_step, t_eval,
               max_steps):
-    """:func:`taylor` with the model's compiled ``series`` (:mod:`lagrange.codegen.taylor_source`) instead of
-    the interpreter; same results."""
+    """Integrate from ``(t0, z0)`` to ``t1`` with the model's compiled ``series``
+    (:mod:`lagrange.codegen.taylor_source`); outputs at ``t_eval`` (sorted in the direction of integration).
+
+    ``const_code``/``const_vals``: the tape's instructions run once at order 0 (``LOADP`` reads ``p[a]``);
+    slots ``0..nz−1`` are the state. ``floor`` and ``p_order``: A and p of the module docstring. At most
+    ``max_steps`` steps (status 4 then: the caller resumes from the returned time and state, bit for bit as an
+    uninterrupted run). Status codes as :class:`lagrange.integrate.compiled.LoopStatus`."""
     S, acc, L, d, Mk, r = _constants(const_code, const_vals, n_slots, n, p_order, p)
     rule = _step_rule(p_order)
     z = z0.copy()
@@ -349,12 +261,12 @@ def taylor_fn(series, const_code, const_vals, n_slots, n, nz, t0, t1, z0, p, flo
     return 0, t, z, Y, n_out, steps
 
 
-_SIGNATURES = {"taylor": TAYLOR, "taylor_fn": TAYLOR_FN}
+_SIGNATURES = {"taylor_fn": TAYLOR_FN}
 _ENTRIES: dict = {}
 
 
 def entry(name: str):
-    """The compiled entry point ``name`` (``"taylor"`` or ``"taylor_fn"``), compiled for its signature — or
+    """The compiled entry point ``name`` (``"taylor_fn"``), compiled for its signature — or
     loaded from numba's cache — on first request: loading a cached entry costs about 0.2 s, so a process pays
     only for the entry it uses."""
     if name not in _ENTRIES:

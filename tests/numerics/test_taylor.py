@@ -1,9 +1,9 @@
-"""method="taylor": the adaptive Taylor integrator (tape interpreter and compiled series).
+"""method="taylor": the adaptive Taylor integrator (C tape interpreter and compiled series).
 
 Independent truth: closed forms (harmonic oscillator, Kepler's equation, the damped oscillator and its
-dissipated work), DOP853 at a much tighter tolerance for every operation the tape knows, energy over
-long runs, the interpreter against the compiled series (same arithmetic: equal results), and the
-backward run returning to the start.
+dissipated work, where a blow-up or a vanishing mass matrix happens), DOP853 at a much tighter tolerance
+for every operation the tape knows, the Taylor coefficients against the reference right-hand side and the
+solution, energy over long runs, and the backward run returning to the start — for each engine on its own.
 """
 
 import math
@@ -80,32 +80,33 @@ def test_every_operation_against_tight_dop853(backend):
     assert np.max(np.abs(sol.work - ref.work)) < 1e-10  # the forced, non-conservative system's work integral
 
 
-def test_interpreter_and_compiled_series_agree_exactly():
-    """Same arithmetic in the same order: identical states, steps and work."""
-    s = n_link_pendulum(3)
-    ic = {"q1": 0.6, "q2": -0.3, "q3": 0.2, "q1_dot": 0.0, "q2_dot": 0.5, "q3_dot": 0.0}
-    runs = [s.simulate((0, 5), ic, {"g": 9.81}, method="taylor", rtol=1e-11, atol=1e-11, backend=b, n_points=11)
-            for b in ("python", "numba")]
-    np.testing.assert_array_equal(runs[0].y, runs[1].y)
-    assert runs[0].nfev == runs[1].nfev
-    assert "interpreted tape" in runs[0].method and "compiled series" in runs[1].method
+def test_c_interpreter_and_compiled_series_both_match_the_closed_form():
+    """The two engines kept (C interpreter, compiled series) each against Kepler's equation at tight tolerance:
+    backward over 2 revolutions, the labels saying which engine ran."""
+    T = -4 * math.pi
+    tt = np.linspace(0, T, 9)
+    runs = [kepler_system().simulate((0, T), KEPLER_IC, {"m": 1.0, "mu": 1.0}, method="taylor", rtol=1e-13,
+                                     atol=1e-13, t_eval=tt, backend=b) for b in ("python", "numba")]
+    for run in runs:
+        assert np.max(np.abs(run.y - kepler_state(tt))) < 2e-10
+    assert "compiled series" in runs[1].method
 
 
 def _forms(system, params, order):
-    """The interpreter and both compiled forms of ``system``'s series (loop form, written out for ``order``)."""
+    """Both compiled forms of ``system``'s series (loop form, written out for ``order``)."""
     from lagrange.codegen.taylor_source import UNROLL_TERMS, unrolled_terms
-    from lagrange.integrate.taylor import compiled_series, tape_of
 
     model = system.compile(params, backend="numba")
-    tape = tape_of(model.equations)
+    tape = model.taylor_tape()
     assert unrolled_terms(tape, order) <= UNROLL_TERMS  # the numba backend runs the written-out form
-    return model, tape, compiled_series(tape), compiled_series(tape, order)
+    return model, tape, model.taylor_series(), model.taylor_series(order)
 
 
 @pytest.mark.parametrize("case", ["every_operation", "double_pendulum", "kepler"])
-def test_written_out_series_equals_the_loop_form_and_the_interpreter(case):
-    """The series written out for one order (small systems, numba backend) does the interpreter's arithmetic
-    in the interpreter's order: equal Taylor coefficients, hence equal states and steps."""
+def test_series_forms_give_the_taylor_polynomial_of_the_true_solution(case):
+    """Both forms of the compiled series (loops; written out for one order) give Taylor coefficients whose
+    polynomial, evaluated a short time ahead, is the solution (DOP853 at rtol 1e-13), and order 1 is the
+    reference rhs: independent truth for the recurrences, not the engines against each other."""
     from lagrange.integrate.compiled import kernel
 
     tol = 1e-8
@@ -119,6 +120,11 @@ def test_written_out_series_equals_the_loop_form_and_the_interpreter(case):
     model, tape, loop_form, written = _forms(s, p, order)
     assert loop_form is not written
     k = kernel("_taylor_loop.py", "taylorloop", "method='taylor'")
+    t0, h = 0.3, 0.02
+    names = [c.func.__name__ for c in s.derived.coordinates]
+    ic = dict(zip(names + [nm + "_dot" for nm in names], y0))
+    ref = s.simulate((t0, t0 + h), ic, p, method="DOP853", rtol=1e-13, atol=1e-14, t_eval=[t0 + h])
+    reference_rhs = s.compile(p, backend="reference").rhs(t0, np.asarray(y0, float), s.compile(p).params)
     z = np.zeros(tape.nz)
     z[: len(y0)] = y0
     coefficients = []
@@ -126,23 +132,13 @@ def test_written_out_series_equals_the_loop_form_and_the_interpreter(case):
         S, acc, L, d, Mk, r = k._constants(tape.const_code, tape.const_vals, tape.n_slots, tape.n, order,
                                            np.asarray(model.params, dtype=float))
         S[: tape.nz, 0] = z
-        assert series(0.3, S, acc, L, d, Mk, r, order)
-        coefficients.append(S[: tape.nz].copy())
-    S, acc, L, d, Mk, r = k._constants(tape.const_code, tape.const_vals, tape.n_slots, tape.n, order,
-                                       np.asarray(model.params, dtype=float))
-    S[: tape.nz, 0] = z
-    slot_w = 2 * tape.n if tape.nz > 2 * tape.n else -1
-    assert k._series(tape.code, tape.consts, tape.n, tape.slot_t, slot_w, tape.mass, tape.force, tape.power, order,
-                     0.3, S, acc, L, d, Mk, r)
-    np.testing.assert_array_equal(coefficients[0], S[: tape.nz])
-    np.testing.assert_array_equal(coefficients[1], S[: tape.nz])
-    assert np.all(np.isfinite(S[: tape.nz])) and np.any(S[: tape.nz, order] != 0)
-    names = [c.func.__name__ for c in s.derived.coordinates]
-    ic = dict(zip(names + [nm + "_dot" for nm in names], y0))
-    runs = [s.simulate((0, 4), ic, p, method="taylor", rtol=tol, atol=tol, backend=b, n_points=9)
-            for b in ("python", "numba")]
-    np.testing.assert_array_equal(runs[0].y, runs[1].y)
-    assert runs[0].nfev == runs[1].nfev
+        assert series(t0, S, acc, L, d, Mk, r, order)
+        C = S[: 2 * tape.n].copy()
+        coefficients.append(C)
+        np.testing.assert_allclose(C[:, 1], reference_rhs, rtol=1e-13, atol=1e-13)
+        poly = sum(C[:, j] * h**j for j in range(order + 1))
+        assert np.max(np.abs(poly - ref.y[-1])) < 1e-11
+    np.testing.assert_allclose(coefficients[0], coefficients[1], rtol=1e-13, atol=1e-300)
 
 
 def test_written_out_series_refuses_another_order():
@@ -193,8 +189,8 @@ def test_energy_bounded_over_many_periods():
 def test_auto_picks_taylor_at_tight_tolerance_or_when_the_c_interpreter_runs_a_python_model(monkeypatch):
     """numba models: Taylor only at rtol ≤ 1e-11 (their compiled DOP853 loop is as fast at loose tolerance);
     python models: Taylor at any tolerance when the C interpreter is here (scipy's loop steps in Python), but
-    not with events, and not on the numba interpreter (its first call costs 0.2 s)."""
-    from lagrange.integrate import c_taylor
+    not with events, and not without C (the compiled series JIT-compiles per model)."""
+    from lagrange.integrate.taylor import available_interpreter
 
     s = n_link_pendulum(2)
     ic = {"q1": 0.6, "q2": -0.3, "q1_dot": 0.0, "q2_dot": 0.0}
@@ -205,7 +201,7 @@ def test_auto_picks_taylor_at_tight_tolerance_or_when_the_c_interpreter_runs_a_p
     python = s.simulate(1, ic, {"g": 9.81}, method="auto", n_points=3)
     ref = s.simulate(1, ic, {"g": 9.81}, rtol=1e-12, atol=1e-12, n_points=3)
     assert np.max(np.abs(python.y - ref.y)) < 1e-7
-    if c_taylor.library() is not None:
+    if available_interpreter() == "c":
         assert python.method.startswith("taylor (interpreted tape, c; auto: no dissipation, non-stiff, python")
 
         def event(t_, y):
@@ -263,103 +259,171 @@ def test_fractional_power_of_a_negative_number_is_a_named_fault_not_a_scipy_type
             s.simulate(10, {"x": 0.0, "x_dot": -2.0}, {}, method=method)
 
 
-# --- the interpreter built in C (lagrange.integrate.c_taylor) against the numba build -------------------------
+# --- the two engines kept (C interpreter, compiled series), each against independent truth ------------------
 
 def _c_or_skip():
-    from lagrange.integrate import c_taylor
+    from lagrange.integrate.taylor import available_interpreter
 
-    if c_taylor.library() is None:  # optional: no C compiler here (the numba interpreter runs instead)
-        pytest.skip(f"no C interpreter: {c_taylor.unavailable_reason()}")
+    if available_interpreter() != "c":  # optional: no C compiler here (the compiled series runs instead)
+        from lagrange.codegen.c_interpreter import library_path_or_reason
+
+        pytest.skip(f"no C interpreter: {library_path_or_reason()[1]}")
 
 
-def _both_engines(system, params, y0, t_span, t_eval, tol):
+def _run(engine, system, params, y0, t_span, t_eval, tol):
     from lagrange.integrate.taylor import integrate_taylor
 
-    model = system.compile(params)  # python backend: the tape is interpreted
-    out = []
-    for engine in ("c", "numba"):
-        try:
-            out.append(integrate_taylor(model, t_span, np.array(y0, dtype=float), t_eval, rtol=tol, atol=tol,
-                                        engine=engine))
-        except IntegrationError as exc:
-            out.append(exc)
-    return out
+    model = system.compile(params)  # python backend: the engine decides how the tape runs
+    try:
+        return integrate_taylor(model, t_span, np.array(y0, dtype=float), t_eval, rtol=tol, atol=tol,
+                                engine=engine)
+    except IntegrationError as exc:
+        return exc
 
 
-@pytest.mark.parametrize("case", ["every_operation", "double_pendulum", "kepler_backward", "damped"])
-def test_c_interpreter_equals_the_numba_interpreter_bit_for_bit(case):
-    """A transcription kept honest: the same states, work integral and tape passes to the last bit (both
-    builds do the same operations in the same order, without fused multiply-adds, with the same libm)."""
-    _c_or_skip()
-    span, tt, tol = (0.0, 6.0), np.linspace(0.0, 6.0, 13), 1e-12
+_SLOW_SERIES = pytest.param("series", marks=pytest.mark.slow)  # a JIT compile per model: in the slow set
+
+
+@pytest.mark.parametrize(("engine", "case"), [
+    ("c", "every_operation"), ("c", "kepler_backward"), ("c", "damped"), ("series", "damped"),
+    pytest.param("series", "every_operation", marks=pytest.mark.slow),
+    pytest.param("series", "kepler_backward", marks=pytest.mark.slow)])
+def test_each_engine_against_independent_truth(engine, case):
+    """Kepler's equation (backward in time), the damped oscillator's closed form and its dissipated work, and
+    every tape operation against DOP853 at rtol 1e-13 — for each engine on its own."""
+    if engine == "c":
+        _c_or_skip()
     if case == "every_operation":
         s, p, y0 = _all_operations_system(), {"a": 3.0}, [0.7, -0.4]
-    elif case == "double_pendulum":
-        s, p, y0 = n_link_pendulum(2), {"g": 9.81}, [0.6, -0.3, 0.0, 0.5]
+        span, tt = (0.0, 6.0), np.linspace(0.0, 6.0, 13)
+        ref = s.simulate(span, {"x": 0.7, "x_dot": -0.4}, p, method="DOP853", rtol=1e-13, atol=1e-14, t_eval=tt)
+        truth, work = ref.y, ref.work
     elif case == "kepler_backward":
         s, p, y0 = kepler_system(), {"m": 1.0, "mu": 1.0}, list(KEPLER_IC.values())
-        span, tt, tol = (0.0, -6.0), np.linspace(0.0, -6.0, 13), 1e-9
+        span, tt = (0.0, -6.0), np.linspace(0.0, -6.0, 13)
+        truth, work = kepler_state(tt), None
     else:
-        s, x = _oscillator(rayleigh=parameters("c") * coordinates("x").diff(t) ** 2 / 2)
-        p, y0 = {"m": 1.0, "k": 4.0, "c": 0.3}, [1.0, 0.0]
-    c_run, numba_run = _both_engines(s, p, y0, span, tt, tol)
-    np.testing.assert_array_equal(c_run.y, numba_run.y)
-    np.testing.assert_array_equal(c_run.t, numba_run.t)
-    assert c_run.nfev == numba_run.nfev and c_run.message == numba_run.message
-    if case in ("every_operation", "damped"):
-        assert c_run.work is not None
-        np.testing.assert_array_equal(c_run.work, numba_run.work)
+        s, _ = _oscillator(rayleigh=parameters("c") * coordinates("x").diff(t) ** 2 / 2)
+        p, y0, span, tt = {"m": 1.0, "k": 4.0, "c": 0.4}, [1.0, 0.0], (0.0, 6.0), np.linspace(0.0, 6.0, 13)
+        g, wd = 0.2, math.sqrt(4.0 - 0.04)
+        x = np.exp(-g * tt) * (np.cos(wd * tt) + g / wd * np.sin(wd * tt))
+        v = -np.exp(-g * tt) * (wd + g * g / wd) * np.sin(wd * tt)
+        truth = np.column_stack([x, v])
+        work = 0.5 * v**2 + 2.0 * x**2 - 2.0  # E(t) − E(0)
+    run = _run(engine, s, p, y0, span, tt, 1e-12)
+    assert not isinstance(run, Exception), run
+    assert np.max(np.abs(run.y - truth)) < 1e-9
+    if work is not None:
+        assert np.max(np.abs(run.work - work)) < 1e-9
 
 
-def test_c_interpreter_stops_like_the_numba_interpreter():
-    """Faults: a finite-time blow-up and a mass matrix that vanishes — the same status, time, state and
-    partial trajectory from both builds."""
-    _c_or_skip()
+@pytest.mark.parametrize("engine", ["c", _SLOW_SERIES])
+def test_each_engine_stops_where_the_closed_form_says(engine):
+    """Faults, located by the closed form: V = −x⁴/4 blows up at t = √2; with T = (1 − x)ẋ²/2 and energy 1/2
+    the mass 1 − x vanishes at t = 2/3. The partial trajectory ends before it, and each output is exact."""
+    if engine == "c":
+        _c_or_skip()
     x = coordinates("x")
     blow_up = System([x], T=x.diff(t) ** 2 / 2, V=-x**4 / 4)
-    vanishing = System([x], T=(1 - x) * x.diff(t) ** 2 / 2)  # M = 1 − x reaches 0 at x = 1
-    for s, y0 in ((blow_up, [1.0, math.sqrt(0.5)]), (vanishing, [0.0, 1.0])):
-        c_err, numba_err = _both_engines(s, {}, y0, (0.0, 3.0), np.linspace(0.0, 3.0, 31), 1e-10)
-        assert isinstance(c_err, IntegrationError) and isinstance(numba_err, IntegrationError)
-        assert str(c_err) == str(numba_err) and c_err.t == numba_err.t
-        np.testing.assert_array_equal(c_err.partial.y, numba_err.partial.y)
+    vanishing = System([x], T=(1 - x) * x.diff(t) ** 2 / 2)
+    tt = np.linspace(0.0, 3.0, 301)
+    for s, y0, t_star in ((blow_up, [1.0, math.sqrt(0.5)], math.sqrt(2)), (vanishing, [0.0, 1.0], 2 / 3)):
+        err = _run(engine, s, {}, y0, (0.0, 3.0), tt, 1e-10)
+        assert isinstance(err, IntegrationError) and "Taylor method stopped" in str(err)
+        assert abs(err.t - t_star) < 2e-3 and err.partial.t[-1] <= err.t
+    err = _run(engine, vanishing, {}, [0.0, 1.0], (0.0, 3.0), tt, 1e-10)
+    part = err.partial
+    exact_x = 1 - (1 - 1.5 * part.t) ** (2 / 3)  # (1 − x)^{3/2} = 1 − 3t/2
+    assert np.max(np.abs(part.y[:-5, 0] - exact_x[:-5])) < 1e-7
 
 
-def test_simulate_says_which_interpreter_ran_and_falls_back_without_a_compiler(monkeypatch):
-    import os
+def test_chunked_runs_equal_one_uninterrupted_run(monkeypatch):
+    """Interrupt points cost nothing: chunks of 1 step (resuming from the exact state) give the same result
+    as chunks of up to 10⁷ steps, for each engine."""
+    from lagrange.integrate import taylor as tay
 
-    from lagrange.integrate import c_taylor
+    s, p, y0 = n_link_pendulum(2), {"g": 9.81}, [0.6, -0.3, 0.0, 0.5]
+    tt = np.linspace(0.0, 2.0, 7)
+    for engine in ("c", "series"):
+        if engine == "c" and tay.available_interpreter() != "c":
+            continue
+        monkeypatch.setattr(tay, "CHUNK_SECONDS", 1e-12)  # every chunk one step
+        small = _run(engine, s, p, y0, (0.0, 2.0), tt, 1e-11)
+        monkeypatch.setattr(tay, "CHUNK_SECONDS", 100.0)
+        big = _run(engine, s, p, y0, (0.0, 2.0), tt, 1e-11)
+        np.testing.assert_array_equal(small.y, big.y)
+        assert small.nfev == big.nfev
+    with pytest.raises(IntegrationError, match="maximum number of steps"):
+        tay.integrate_taylor(s.compile(p), (0.0, 2.0), np.array(y0), tt, rtol=1e-11, atol=1e-11, max_steps=5)
+
+
+def test_without_a_c_interpreter_the_compiled_series_runs(monkeypatch):
+    """No compiler (or a failing one, or LAGRANGE_C_TAYLOR=0): the reason is named and the compiled series
+    (numba) runs python models, still matching the closed form."""
+    from lagrange.codegen import c_interpreter
+    from lagrange.integrate.taylor import interpreter
 
     s, _ = _oscillator()
     run = dict(t_span=(0, 1), initial={"x": 1.0, "x_dot": 0.0}, params={"m": 1.0, "k": 1.0}, method="taylor",
                n_points=3)
-    if c_taylor.library() is not None:
-        assert "interpreted tape, c" in s.simulate(**run).method
-    key = os.environ.get("LAGRANGE_CACHE_DIR")
+    monkeypatch.setattr(c_interpreter, "extension_path", lambda: None)  # as in a source checkout
     for cc, reason in (("no-such-compiler-xyz", "no C compiler found"), ("false", "the C compiler failed")):
         monkeypatch.setenv("CC", cc)  # another compiler is another library key: nothing cached for it
-        monkeypatch.delitem(c_taylor._LOADED, key, raising=False)  # restored after the test
-        assert c_taylor.library() is None and reason in c_taylor.unavailable_reason()
+        c_interpreter.forget()
+        assert reason in c_interpreter.library_path_or_reason()[1]
+        assert interpreter() == "series"
+        with pytest.raises(Exception, match=reason):
+            interpreter("c")
         sol = s.simulate(**run)
-        assert "interpreted tape, numba" in sol.method
         assert sol.y[-1, 0] == pytest.approx(math.cos(1.0), abs=1e-8)
+    c_interpreter.forget()
     monkeypatch.setenv("LAGRANGE_C_TAYLOR", "0")
-    assert c_taylor.library() is None and "LAGRANGE_C_TAYLOR=0" in c_taylor.unavailable_reason()
+    assert "LAGRANGE_C_TAYLOR=0" in c_interpreter.library_path_or_reason()[1]
+    with pytest.raises(ValueError, match="retired"):
+        interpreter("numba")
+    monkeypatch.undo()
+    c_interpreter.forget()
 
 
-def test_a_damaged_c_library_is_rebuilt(monkeypatch, tmp_path):
-    """A library file that does not load (truncated by a crash, say) is deleted and built again, once."""
-    import os
+def test_an_interrupt_between_chunks_carries_the_exact_partial_trajectory(monkeypatch):
+    """KeyboardInterrupt raised between chunks (where Ctrl-C's handler runs) reaches the caller with
+    ``partial``: the outputs computed so far, each on Kepler's closed form; raised before anything was
+    integrated (while an engine loads), an empty partial."""
+    from lagrange.integrate import taylor as tay
 
-    from lagrange.integrate import c_taylor
+    model = kepler_system().compile({"m": 1.0, "mu": 1.0})
+    tt = np.linspace(0, 60.0, 121)
+    calls = {"n": 0}
+    record = tay._Chunks.record
 
-    _c_or_skip()
-    monkeypatch.setenv("LAGRANGE_CACHE_DIR", str(tmp_path))  # a cache of its own (the numba kernels stay put)
-    monkeypatch.delitem(c_taylor._LOADED, str(tmp_path), raising=False)
-    path = c_taylor.library_path(c_taylor.compiler())
-    path.write_bytes(b"not a shared library")  # damaged before this process maps it
-    rebuilt = c_taylor.library()
-    assert rebuilt is not None and rebuilt.path == path and path.read_bytes()[:4] == b"\x7fELF"
-    assert c_taylor.unavailable_reason() is None
-    c_taylor._LOADED.pop(str(tmp_path))
-    assert sorted(os.listdir(tmp_path)) == [path.name]  # no temporary files left
+    def interrupted_after_three(self, steps, seconds):
+        record(self, steps, seconds)
+        calls["n"] += 1
+        if calls["n"] == 3:
+            raise KeyboardInterrupt
+
+    monkeypatch.setattr(tay, "CHUNK_SECONDS", 1e-12)  # one step per chunk
+    monkeypatch.setattr(tay._Chunks, "record", interrupted_after_three)
+    with pytest.raises(KeyboardInterrupt) as info:
+        tay.integrate_taylor(model, (0, 60.0), kepler_state([0.0])[0], tt, rtol=1e-12, atol=1e-12)
+    part = info.value.partial
+    assert not part.success and "Ctrl-C" in part.message and 1 <= len(part.t) < len(tt)
+    assert np.max(np.abs(part.y - kepler_state(part.t))) < 1e-9
+    monkeypatch.setattr(tay, "_run", lambda *a: (_ for _ in ()).throw(KeyboardInterrupt()))
+    with pytest.raises(KeyboardInterrupt) as info:
+        tay.integrate_taylor(model, (0, 60.0), kepler_state([0.0])[0], tt, rtol=1e-12, atol=1e-12)
+    assert len(info.value.partial.t) == 0
+
+
+def test_a_ctrl_c_wrapped_by_numba_comes_back_as_keyboard_interrupt():
+    """numba boxes a compiled call's results in Python code; Ctrl-C handled there surfaces as SystemError
+    caused by KeyboardInterrupt (seen in the SIGINT test of the compiled series): unwrapped, other
+    SystemErrors left alone."""
+    from lagrange.integrate.taylor import _reraise_interrupt
+
+    wrapped = SystemError("returned a result with an exception set")
+    wrapped.__cause__ = SystemError("inner")
+    wrapped.__cause__.__cause__ = KeyboardInterrupt()
+    with pytest.raises(KeyboardInterrupt):
+        _reraise_interrupt(wrapped)
+    assert _reraise_interrupt(SystemError("unrelated")) is None

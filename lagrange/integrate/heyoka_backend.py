@@ -1,0 +1,99 @@
+r"""``method="heyoka"``: the model's derived equations integrated by heyoka.py's adaptive Taylor method.
+
+heyoka (Biscani & Izzo, *MNRAS* 504 (2021) 2614) compiles the Taylor recurrences of an ODE system with LLVM
+and steps with Jorba & Zou's rule, as :mod:`lagrange.integrate.taylor` does. The system handed to it is the
+project's own — ``M q̈ = f`` from the derivation, converted by :mod:`lagrange.codegen.heyoka_expr` and reached
+through the compiled model (:meth:`~lagrange.codegen.numeric.NumericModel.heyoka_taylor`) — not a
+re-derivation by heyoka. Parameters are heyoka runtime parameters, so a run with other values (a sweep)
+reuses heyoka's compiled code. Optional: ``pip install "lagrange-dynamics[heyoka]"``.
+
+Tolerance: heyoka takes one ε with a mixed absolute/relative criterion (like ``atol = rtol``); the stricter of
+``rtol`` and ``atol`` is used. Outputs at ``t_eval`` come from heyoka's dense output (``propagate_grid``).
+
+Scope: unconstrained analytic systems (as ``method="taylor"``); time-varying inputs, constraints needing
+multipliers and friction switches are refused. Not interruptible by Ctrl-C mid-run (heyoka's loop does not
+check for signals): keep runs bounded with ``max_steps``.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ..codegen.numeric import NumericModel
+from ..errors import InputError, IntegrationError
+from ..results.trajectory import Trajectory
+from .compiled import MAX_STEPS, check_output_times
+
+__all__ = ["integrate_heyoka"]
+
+
+def integrate_heyoka(model: NumericModel, t_span, y0, t_eval, *, rtol: float, atol: float,
+                     max_step: float = np.inf, max_steps: int = MAX_STEPS, label: str | None = None) -> Trajectory:
+    """Integrate ``model`` from ``y0 = [q, q̇]`` at ``t_span[0]`` with heyoka (module docstring); outputs at
+    ``t_eval`` (sorted in the direction of integration). Same signature as
+    :func:`lagrange.integrate.taylor.integrate_taylor`.
+
+    Raises
+    ------
+    BackendError
+        heyoka is not installed (the message names the extra).
+    TapeError
+        Constraints or a non-analytic function in the equations (named).
+    InputError
+        The model has time-varying inputs (a schedule), which heyoka cannot call.
+    ValueError
+        Bad tolerances or ``t_eval`` (as scipy words them).
+    IntegrationError
+        heyoka stopped early (non-finite state, step limit); ``partial`` holds the outputs reached.
+    """
+    if model.schedule is not None:
+        raise InputError("method='heyoka' cannot follow time-varying inputs (the model has a schedule; constant "
+                         "inputs are parameters): use method='DOP853' or another scipy method")
+    odes = model.heyoka_taylor()
+    t0, t1 = float(t_span[0]), float(t_span[1])
+    rtol, atol, max_step = float(rtol), float(atol), float(max_step)
+    if not (rtol > 0 and math.isfinite(rtol)) or not (atol > 0 and math.isfinite(atol)):
+        raise ValueError(f"method='heyoka' needs finite rtol > 0 and atol > 0, got rtol={rtol}, atol={atol}")
+    if not max_step > 0:
+        raise ValueError("max_step must be positive")
+    t_eval = check_output_times(t_eval, t0, t1)
+    y0 = np.asarray(y0, dtype=float)
+    z0 = y0 if odes.nz == y0.size else np.append(y0, 0.0)
+    import heyoka as hy
+
+    ta = hy.taylor_adaptive(odes.system, [float(v) for v in z0], time=t0, tol=max(min(rtol, atol), 2.0**-52),
+                            pars=[float(v) for v in model.params], compact_mode=odes.compact)
+    grid = t_eval if t_eval.size and t_eval[0] == t0 else np.concatenate([[t0], t_eval])
+    skip = grid.size - t_eval.size
+    kw = {"max_steps": int(max_steps)}
+    if math.isfinite(max_step):
+        kw["max_delta_t"] = max_step
+    res = ta.propagate_grid(np.ascontiguousarray(grid), **kw)
+    outcome, steps, Y = res[0], int(res[3]), np.asarray(res[-1], dtype=float)[skip:]
+    if outcome == hy.taylor_outcome.time_limit and ta.time != t1:  # t_eval ends before t1
+        res = ta.propagate_until(t1, **kw)
+        outcome, steps = res[0], steps + int(res[3])
+    direction = 1.0 if t1 >= t0 else -1.0
+    Y = Y.reshape(-1, odes.nz)  # after a failure heyoka returns only the rows it reached
+    reached = (direction * (t_eval[: Y.shape[0]] - ta.time) <= 0) & np.all(np.isfinite(Y), axis=1)
+    n_out = int(np.argmin(reached)) if not reached.all() else Y.shape[0]
+    Y = Y[:n_out]
+    n2 = 2 * odes.n
+    ok = outcome == hy.taylor_outcome.time_limit and ta.time == t1 and n_out == t_eval.size
+    order = int(ta.order)
+    message = ("The solver successfully reached the end of the integration interval." if ok else
+               f"heyoka stopped at t={ta.time:.9g}: {outcome.name}")
+    message += f" ({steps} heyoka Taylor steps of order {order})"
+    traj = Trajectory(t=t_eval[:n_out].copy(), y=Y[:, :n2].copy(), model=model,
+                      method=label or f"heyoka (taylor_adaptive, order {order})", success=ok, message=message,
+                      nfev=int(steps) * order, work=None if odes.nz == n2 else Y[:, n2].copy(),
+                      initial=(t0, y0.copy()))
+    if ok:
+        return traj
+    coords = model.equations.coordinates
+    state = np.asarray(ta.state, dtype=float)
+    raise IntegrationError(f"{message}: a blow-up, a singular configuration or too many steps (raise max_steps). "
+                           f"The trajectory up to there ({n_out} output points) is in the exception's `partial` "
+                           "attribute.", t=float(ta.time), state=dict(zip(coords, state[:n2])), partial=traj)
