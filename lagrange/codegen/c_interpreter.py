@@ -8,13 +8,13 @@ built at install time, else a library built once per machine into the cache, ver
 2. **Built at run time** (no extension module, e.g. a source checkout): the system's compiler (``$CC``, else
    Python's configured compiler, else ``cc``) builds ``ctaylor_<key>.so`` in
    :func:`~lagrange.codegen.numba_backend.cache_dir` (about 0.3 s, once per machine): compiled to a temporary
-   file, fsynced, its SHA-256 digest sealed next to it (``.so.sha256``) and moved into place with
+   file, fsynced, sealed with the cache's keyed MAC (:func:`lagrange.codegen.cache.seal`, ``.so.mac``: an
+   HMAC-SHA256 with the per-user secret, so a planted or retagged library is refused too) and moved into place with
    ``os.replace``. Before each load the library is checked against its seal (:func:`_verify`); a truncated or
    bit-flipped library (a crash mid-write, a full disk, an edit) is deleted and rebuilt instead of being
    loaded — loading a truncated library would die with SIGBUS.
 
-The seal is a plain digest; :func:`_seal`/:func:`_verify` are the only two places that know it, so a keyed MAC
-(the cache-integrity work of issue #21) replaces them without touching the rest.
+:func:`_seal`/:func:`_verify` are the only two places that know how the library is authenticated.
 
 ``LAGRANGE_C_TAYLOR=0`` (or off/false/no) disables both; :func:`library_path_or_reason` then says so.
 """
@@ -22,7 +22,6 @@ The seal is a plain digest; :func:`_seal`/:func:`_verify` are the only two place
 from __future__ import annotations
 
 import hashlib
-import hmac
 import importlib.util
 import os
 import platform
@@ -81,28 +80,25 @@ def library_path(cc: list[str]) -> Path:
 
 # --- the seal: the one place that knows how a built library is authenticated ---------------------------------
 def _seal_path(path: Path) -> Path:
-    return path.with_name(path.name + ".sha256")
+    """Where the tag of ``path`` is kept (``<name>.mac``)."""
+    from .cache import _sidecar
 
-
-def _digest(data: bytes) -> str:
-    return hashlib.sha256(data).hexdigest()
+    return _sidecar(path)
 
 
 def _seal(path: Path, data: bytes) -> None:
-    """Record the digest of ``data`` (the bytes written to ``path``) next to ``path``, atomically."""
-    from .numba_backend import atomic_write
+    """Authenticate ``data`` (the bytes about to be moved to ``path``) with the cache's keyed MAC
+    (:func:`lagrange.codegen.cache.seal`: HMAC-SHA256 with the per-user secret, in ``<name>.mac``)."""
+    from .cache import seal
 
-    atomic_write(_seal_path(path), _digest(data) + "\n")
+    seal(path, data)
 
 
 def _verify(path: Path) -> bool:
-    """Whether ``path`` exists and its bytes match its seal (a missing seal fails)."""
-    try:
-        data = path.read_bytes()
-        sealed = _seal_path(path).read_text(encoding="ascii").strip()
-    except (OSError, UnicodeDecodeError):
-        return False
-    return hmac.compare_digest(_digest(data), sealed)
+    """Whether ``path`` exists and its bytes match its keyed MAC (a missing or foreign tag fails)."""
+    from .cache import verify
+
+    return verify(path)
 
 
 def _fsync_dir(folder: Path) -> None:

@@ -245,11 +245,13 @@ def _sidecar(path: Path) -> Path:
     return path.with_name(path.name + _SIDECAR)
 
 
-def seal(path: Path) -> None:
+def seal(path: Path, data: bytes | None = None) -> None:
     """Authenticate the file at ``path`` (inside :func:`cache_dir`, written by another tool, e.g. a
-    compiler): its tag goes to ``<name>.mac`` next to it. Seal only bytes you made."""
+    compiler): its tag goes to ``<name>.mac`` next to it. Seal only bytes you made. ``data``: the bytes that
+    will be at ``path`` (to seal a file before it is moved into place), else the file's current bytes."""
     path = Path(path)
-    atomic_write(_sidecar(path), _MAGIC + tag(path.name, path.read_bytes(), kind=b"file", directory=path.parent))
+    data = path.read_bytes() if data is None else data
+    atomic_write(_sidecar(path), _MAGIC + tag(path.name, data, kind=b"file", directory=path.parent))
 
 
 def verify(path: Path) -> bool:
