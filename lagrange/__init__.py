@@ -34,6 +34,10 @@ _EXPORTS: dict[str, str] = {
     "action": ".analysis.variational",
     "euler_lagrange": ".analysis.variational",
     "variational_integrate": ".analysis.variational",
+    "is_conservative": ".analysis.conservative",
+    "potential_of": ".analysis.conservative",
+    "work_along": ".analysis.conservative",
+    "expand_potential": ".analysis.series",
     "t": ".conventions",
     "BackendError": ".errors",
     "CollisionError": ".errors",
@@ -169,6 +173,10 @@ __all__ = [
     "support_loads",
     "LagrangeWarning",
     "UnusedParameterWarning",
+    "is_conservative",
+    "potential_of",
+    "work_along",
+    "expand_potential",
 ]
 
 __getattr__, __dir__ = lazy_exports(__name__, _EXPORTS, __all__)

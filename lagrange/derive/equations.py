@@ -127,5 +127,11 @@ class Equations:
     @property
     def is_conservative(self) -> bool:
         """True when the Jacobi integral is conserved identically (no dissipation, forcing, explicit t or
-        moving constraints)."""
+        moving constraints).
+
+        This is a property of the whole system's equations, not a classification of a force field: a system
+        whose declared generalized forces ``F`` form a conservative field (say ``F = (−kx, −ky)`` written as
+        forces instead of a potential) still answers False here when they enter as applied forces. To ask
+        whether a force field is conservative (Wells 5.6/5.8), or to find its potential, use
+        :func:`lagrange.is_conservative` and :func:`lagrange.potential_of`."""
         return self.jacobi_rate == 0
