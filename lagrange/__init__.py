@@ -87,6 +87,9 @@ _EXPORTS: dict[str, str] = {
     "to_symbols": ".model.coordinates",
     "unknowns": ".model.coordinates",
     "EarthFrame": ".model.frames",
+    "Ellipsoid": ".model.frames",
+    "WELLS_1924": ".model.frames",
+    "apparent_gravity": ".model.frames",
     "Frame": ".model.frames",
     "inputs": ".model.inputs",
 }
@@ -177,6 +180,9 @@ __all__ = [
     "potential_of",
     "work_along",
     "expand_potential",
+    "Ellipsoid",
+    "WELLS_1924",
+    "apparent_gravity",
 ]
 
 __getattr__, __dir__ = lazy_exports(__name__, _EXPORTS, __all__)
