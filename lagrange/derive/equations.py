@@ -68,6 +68,7 @@ class Equations:
     reaction_matrix: sp.ImmutableMatrix = sp.ImmutableMatrix(0, 0, [])  # B (n, m): M q̈ = f + Bλ; Aᵀ unless rough
     rough_signs: tuple = ()  # σ_k = sign(λ_k)·sign(v_s,k) symbols of rough constraints (bound per segment)
     sliding_velocities: tuple = ()  # ((k, v_s,k), ...) for rough constraints
+    planar_friction: tuple = ()  # ((k, |v|²), ...) rough constraints sliding over a surface (v_s,k = |v| − 1e-9)
     inputs: tuple = ()  # u_k symbols: time-varying inputs, given at compile/simulate time
 
     def __hash__(self) -> int:
