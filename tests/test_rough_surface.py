@@ -6,7 +6,19 @@ import pytest
 import sympy as sp
 from scipy.integrate import solve_ivp
 
-from lagrange import DeclarationError, Particle, Rough, System, coordinates, parameters, t
+from lagrange import (
+    DeclarationError,
+    Force,
+    Frame,
+    Particle,
+    Rough,
+    System,
+    coordinates,
+    inputs,
+    parameters,
+    rot_z,
+    t,
+)
 
 M_, G_, MU_ = 2.0, 9.81, 0.3
 
@@ -113,3 +125,31 @@ def test_sliding_components_must_be_linear_in_the_velocities():
     with pytest.raises(DeclarationError, match="2 \\(or 3\\) components"):
         System([x, y, z], bodies=[Particle(m, (x, y, z))],
                constraints=[Rough(z, mu, (x.diff(t),), "floor")])
+
+
+def test_rough_turntable_moving_frame_with_an_input_force():
+    """A puck on a rough turntable turning at ω (coordinates in the table's frame, sliding velocity relative to
+    the table) pushed by an input force u(t) along the table's X axis, against a Newton formulation in the
+    rotating frame: Ẍ = 2ωẎ + ω²X + u/m − μg v_X/|v|, Ÿ = −2ωẊ + ω²Y − μg v_Y/|v|."""
+    X, Y, Z = coordinates("X Y Z")
+    m, g, mu = parameters("m g mu")
+    u = inputs("u")
+    w = 1.3
+    frame = Frame(rotation=rot_z(w * t))
+    puck = Particle(m, frame.point((X, Y, Z)))
+    s = System([X, Y, Z], bodies=[puck], V=m * g * Z, forces=[Force(puck, frame.direction((u, 0, 0)))],
+               constraints=[Rough(Z, mu, (X.diff(t), Y.diff(t)), "table")])
+    push = lambda tt: 0.5 * np.cos(3 * tt)  # noqa: E731
+    P = {m: M_, g: G_, mu: 0.1}
+    start = {X: 0.4, Y: -0.2, Z: 0, X.diff(t): 0.3, Y.diff(t): 1.1, Z.diff(t): 0}
+    te = np.linspace(0, 0.8, 41)
+    tr = s.simulate(0.8, start, P, inputs={u: push}, t_eval=te, rtol=1e-11, atol=1e-12)
+    assert tr.t[-1] == pytest.approx(0.8)
+
+    def f(tt, y):
+        x_, y_, vx, vy = y
+        sp_ = np.hypot(vx, vy)
+        return [vx, vy, 2 * w * vy + w**2 * x_ + push(tt) / M_ - 0.1 * G_ * vx / sp_,
+                -2 * w * vx + w**2 * y_ - 0.1 * G_ * vy / sp_]
+    ref = solve_ivp(f, (0, 0.8), [0.4, -0.2, 0.3, 1.1], t_eval=te, rtol=1e-12, atol=1e-13, method="DOP853")
+    assert np.max(np.abs(tr.y[:, :2] - ref.y[:2].T)) < 1e-8
