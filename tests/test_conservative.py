@@ -64,6 +64,7 @@ def test_prob_5_1f_spherical_components():
     assert not is_conservative([Fr, Fth, printed], [r, th, ph])
 
 
+@pytest.mark.slow
 def test_prob_5_1g_arbitrary_functions_of_their_own_coordinate():
     r, th, ph = sp.symbols("r theta phi")
     f1, f2, f3 = sp.Function("f1"), sp.Function("f2"), sp.Function("f3")
@@ -115,6 +116,7 @@ def test_curl_free_field_with_a_hole_is_only_locally_conservative():
     assert is_zero(work_along(F, [r, th], [1, s], (s, 0, 2 * sp.pi), position=pos) - 2 * sp.pi)
 
 
+@pytest.mark.slow
 def test_numeric_quadrature_when_no_closed_form(monkeypatch):
     s = sp.Symbol("s")
     W = work_along([sp.exp(-x**2) * sp.cos(x**3), 0], [x, y], [s, 0], (s, 0, 1))

@@ -77,6 +77,7 @@ def test_constants_and_height_correction():
     assert abs(g1000 - (980.629 - (0.30855 - 0.000072) * 1)) < 1e-3  # (14.10) at h = 1 km
 
 
+@pytest.mark.slow
 def test_ellipsoidal_earth_frame_gives_wells_14_16_with_the_geographic_radius():
     """A free particle in EarthFrame(Φ, ellipsoid=...) with true gravity: the equations are Wells' (14.16)
     (the R ω_e² terms cancel), the same as those of a sphere of radius R(Φ); the deflection of true gravity

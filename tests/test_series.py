@@ -48,6 +48,7 @@ def test_prob_5_6_bar_and_spring_stiffness_matches_normal_modes():
     assert abs(float(omega) ** 2 - float((K / (M * l**2 / 3)).subs(vals))) < 1e-9
 
 
+@pytest.mark.slow
 def test_ex_5_6_and_prob_5_9_multipoles_about_infinity():
     r, th, Q, Q1 = sp.symbols("r theta Q Q1", positive=True)
     d_plus = sp.sqrt(r**2 + s**2 + 2 * r * s * sp.cos(th))
@@ -68,6 +69,7 @@ def test_on_axis_disk_gravity_far_field():
     assert is_zero(ser.expr + G * M * m / z * (1 - a**2 / (4 * z**2) + a**4 / (8 * z**4)))
 
 
+@pytest.mark.slow
 def test_two_coordinates_hessian_is_the_spring_formula_5_13():
     """A stretched spring from the origin to an anchor at (X, Y): the Hessian at the junction is
     k[(l'/l) n nᵀ + (1 − l'/l) I] (Wells 5.13)."""
