@@ -23,18 +23,19 @@ from ..derive.equations import Equations
 
 __all__ = ["regularized_planar_friction", "planar_friction_for"]
 
-_TINY = sp.Float(1e-300)  # |v|² floor of the exact form: at rest the friction is 0·(1/√1e-300) = 0, not 0/0
+_TINY = sp.Float(1e-300)  # added to |v|² in the exact form: at rest the friction is 0/√1e-300 = 0, not 0/0
 
 
 def planar_friction_for(eqs: Equations, friction: str, epsilon: float) -> Equations:
     """The numeric form for ``simulate(friction=...)``: ``"regularize"`` → :func:`regularized_planar_friction`;
-    ``"events"`` → exact ``|v|`` with ``|v|²`` floored at 1e-300, so that the state at rest evaluates (the
-    friction is 0 there instead of 0/0) and the run can end with a message instead of NaNs."""
+    ``"events"`` → ``|v|² + 1e-300`` (exact in double precision for any sliding speed above the 1e-9 stop), so
+    that the state at rest evaluates (the friction is 0 there instead of 0/0) and the run can end with a message
+    instead of NaNs. (Not ``Max``: sympy's ``Max`` re-simplifies on every substitution, seconds per segment.)"""
     if not eqs.planar_friction:
         return eqs
     if friction == "regularize":
         return regularized_planar_friction(eqs, epsilon)
-    return _replace_bases(eqs, {s2: sp.Max(s2, _TINY) for _, s2 in eqs.planar_friction}, regularized=False)
+    return _replace_bases(eqs, {s2: s2 + _TINY for _, s2 in eqs.planar_friction}, regularized=False)
 
 
 def _replace_bases(eqs: Equations, bases: dict, *, regularized: bool) -> Equations:
