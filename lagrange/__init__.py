@@ -34,6 +34,10 @@ _EXPORTS: dict[str, str] = {
     "action": ".analysis.variational",
     "euler_lagrange": ".analysis.variational",
     "variational_integrate": ".analysis.variational",
+    "is_conservative": ".analysis.conservative",
+    "potential_of": ".analysis.conservative",
+    "work_along": ".analysis.conservative",
+    "expand_potential": ".analysis.series",
     "t": ".conventions",
     "BackendError": ".errors",
     "CollisionError": ".errors",
@@ -85,6 +89,9 @@ _EXPORTS: dict[str, str] = {
     "to_symbols": ".model.coordinates",
     "unknowns": ".model.coordinates",
     "EarthFrame": ".model.frames",
+    "Ellipsoid": ".model.frames",
+    "WELLS_1924": ".model.frames",
+    "apparent_gravity": ".model.frames",
     "Frame": ".model.frames",
     "inputs": ".model.inputs",
 }
@@ -173,6 +180,13 @@ __all__ = [
     "UnusedParameterWarning",
     "CacheError",
     "CacheIntegrityWarning",
+    "is_conservative",
+    "potential_of",
+    "work_along",
+    "expand_potential",
+    "Ellipsoid",
+    "WELLS_1924",
+    "apparent_gravity",
 ]
 
 __getattr__, __dir__ = lazy_exports(__name__, _EXPORTS, __all__)

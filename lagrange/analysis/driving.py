@@ -30,26 +30,22 @@ import scipy.optimize
 import sympy as sp
 
 from ..conventions import t
-from ..errors import LagrangeError, SymbolicTimeoutError
+from ..derive.lagrange import _tidy_force
+from ..errors import LagrangeError
 from ..model.coordinates import coordinate_name, to_functions, to_symbols
 from ..safe_sympify import sympify as _sympify
-from ..simplification import is_zero, run_bounded, solve
+from ..simplification import is_zero, solve
 
 __all__ = ["driving_forces", "actuator_forces", "static_equilibrium"]
 
-_TIDY_SECONDS = 2.0  # per attempt of the bounded simplify of one result (4 attempts at most)
-_TIDY_LIMIT = 300  # larger results are returned as they are
-
-
 def _tidy(e):
-    """Bounded ``simplify``: at most a few seconds per expression, the input unchanged when it is too big."""
-    e = _sympify(e)
-    if sp.count_ops(e) > _TIDY_LIMIT:
-        return e
-    try:
-        return run_bounded(sp.simplify, e, what="simplifying a driving force", seconds=_TIDY_SECONDS)
-    except SymbolicTimeoutError:
-        return e
+    """The derivation path's bounded tidying (:func:`lagrange.derive.lagrange._tidy_force`: the Pythagorean
+    cleanup, skipped on large expressions and never accepted when it grows the result), then common factors
+    pulled out. No ``simplify``: on Wells Ex. 12.6 (a body with products of inertia on three angles) each
+    coordinate's ``simplify`` ran into its time limit and the result came back unsimplified anyway."""
+    e = _tidy_force(_sympify(e))
+    f = sp.factor_terms(e)
+    return f if sp.count_ops(f) <= sp.count_ops(e) else e
 
 
 def _refuse_rough(eqs, what: str) -> None:

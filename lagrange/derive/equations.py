@@ -68,6 +68,7 @@ class Equations:
     reaction_matrix: sp.ImmutableMatrix = sp.ImmutableMatrix(0, 0, [])  # B (n, m): M q̈ = f + Bλ; Aᵀ unless rough
     rough_signs: tuple = ()  # σ_k = sign(λ_k)·sign(v_s,k) symbols of rough constraints (bound per segment)
     sliding_velocities: tuple = ()  # ((k, v_s,k), ...) for rough constraints
+    planar_friction: tuple = ()  # ((k, |v|²), ...) rough constraints sliding over a surface (v_s,k = |v| − 1e-9)
     inputs: tuple = ()  # u_k symbols: time-varying inputs, given at compile/simulate time
 
     def __hash__(self) -> int:
@@ -127,5 +128,11 @@ class Equations:
     @property
     def is_conservative(self) -> bool:
         """True when the Jacobi integral is conserved identically (no dissipation, forcing, explicit t or
-        moving constraints)."""
+        moving constraints).
+
+        This is a property of the whole system's equations, not a classification of a force field: a system
+        whose declared generalized forces ``F`` form a conservative field (say ``F = (−kx, −ky)`` written as
+        forces instead of a potential) still answers False here when they enter as applied forces. To ask
+        whether a force field is conservative (Wells 5.6/5.8), or to find its potential, use
+        :func:`lagrange.is_conservative` and :func:`lagrange.potential_of`."""
         return self.jacobi_rate == 0

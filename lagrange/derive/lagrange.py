@@ -98,7 +98,7 @@ def lagrange_equations(system) -> Equations:
     internal = set(q) | set(qd) | set(qdd) | {t}
     everything = [T, V, P, D, *F] + [to_symbols(c.velocity, coords) for c in system.constraints]
     everything += [to_symbols(c.position, coords) for c in system.constraints if c.position is not None]
-    everything += [to_symbols(sp.Matrix(c.friction), coords) for c in system.constraints if c.friction]
+    everything += [to_symbols(sp.Matrix(_flat(c.friction)), coords) for c in system.constraints if c.friction]
     params = set().union(*(e.free_symbols for e in everything)) - internal
     inputs = {s for s in params if is_input(s)}
     params -= inputs
@@ -294,7 +294,14 @@ def _display_signs(eqs: Equations) -> dict:
     """σ_k of rough constraints shown as sign(λ_k)·sign(v_s,k) — the friction opposes sliding with
     magnitude μ|N|."""
     pairs = zip(eqs.rough_signs, eqs.sliding_velocities)
-    return {sig: sp.sign(eqs.multipliers[k]) * sp.sign(v) for sig, (k, v) in pairs}
+    planar = {k for k, _ in eqs.planar_friction}  # friction over a surface: σ = sign(λ), the direction is v/|v|
+    return {sig: sp.sign(eqs.multipliers[k]) * (1 if k in planar else sp.sign(v)) for sig, (k, v) in pairs}
+
+
+def _flat(friction) -> list:
+    """(μ, v_s or (v_1, v_2, …), normal) as one flat list."""
+    mu, vs, normal = friction
+    return [mu, *(vs if isinstance(vs, tuple) else (vs,)), normal]
 
 
 def constraint_equations(eqs: Equations) -> list[sp.Eq]:

@@ -19,7 +19,11 @@ import sympy as sp
 from ..conventions import t
 from ..model.coordinates import to_symbols
 
-__all__ = ["constraint_blocks", "multiplier_symbols"]
+__all__ = ["constraint_blocks", "multiplier_symbols", "PLANAR_STOP_SPEED"]
+
+#: Friction over a surface (``Rough`` with sliding components): the sliding function whose zero ends a run with
+#: exact friction is ``|v| − PLANAR_STOP_SPEED`` (|v| only touches 0, it does not change sign).
+PLANAR_STOP_SPEED = sp.Float(1e-9)
 
 
 def multiplier_symbols(m: int) -> tuple:
@@ -44,14 +48,24 @@ def constraint_blocks(specs, coords, q, qd) -> dict:
         phi.append(None if spec.position is None else to_symbols(spec.position, coords))
     lam = multiplier_symbols(m)
     B = sp.Matrix(A.T)  # reaction matrix: M q̈ = f + B λ
-    signs, sliding = [], []
+    signs, sliding, planar = [], [], []
     for k, spec in enumerate(specs):
         if spec.friction is None:
             continue
         mu, vs, normal = spec.friction
-        vs_s = to_symbols(vs, coords)
         sigma = sp.Symbol(f"_rough{k}", real=True)  # sign(λ_k)·sign(v_s), fixed within a segment
         signs.append(sigma)
+        if isinstance(vs, tuple):  # over a surface: −μ N Σ_i (v_i/|v|) ∂v_i/∂q̇ with σ = sign(λ_k)
+            comps = [to_symbols(v, coords) for v in vs]
+            speed2 = sp.Add(*[v**2 for v in comps])
+            inv = sp.Pow(speed2, sp.Rational(-1, 2))  # regularized by lagrange.codegen.rough_friction
+            sliding.append((k, sp.sqrt(speed2) - PLANAR_STOP_SPEED))
+            planar.append((k, speed2))
+            for j in range(n):
+                B[j, k] -= mu * to_symbols(normal, coords) * sigma * inv * sp.Add(
+                    *[v * sp.diff(v, qd[j]) for v in comps])
+            continue
+        vs_s = to_symbols(vs, coords)
         sliding.append((k, vs_s))
         for j in range(n):
             B[j, k] -= mu * to_symbols(normal, coords) * sigma * sp.diff(vs_s, qd[j])
@@ -59,6 +73,7 @@ def constraint_blocks(specs, coords, q, qd) -> dict:
         "reaction_matrix": sp.ImmutableMatrix(B),
         "rough_signs": tuple(signs),
         "sliding_velocities": tuple(sliding),
+        "planar_friction": tuple(planar),
         "constraint_names": tuple(s.name for s in specs),
         "constraint_matrix": sp.ImmutableMatrix(A),
         "constraint_bias": tuple(b),

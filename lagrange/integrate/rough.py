@@ -47,7 +47,18 @@ def _choose_signs(model, t0, y, p, vs_fn, kinds):
     v = list(vs_fn(t0, y, p))
     scale = 1e-10 * (1.0 + float(np.max(np.abs(y))))
     p = p.copy()
+    # --- friction over a surface (sliding function |v| − 1e-9, lagrange.codegen.rough_friction): at rest the
+    # direction v/|v| is undefined and starting to slide is not modelled
+    planar = {k for k, _ in eqs.planar_friction}
     for i, (k, _) in enumerate(kinds):
+        if k in planar and v[i] <= 0:
+            raise _Stop(f"{eqs.constraint_names[k]}: at rest at t={t0:.9g} on a rough surface (friction over a "
+                        "surface in any direction); starting from rest and sticking are not modelled with "
+                        "friction='events', the run ends here (friction='regularize' runs through rest)")
+    # --- end of friction over a surface
+    for i, (k, _) in enumerate(kinds):
+        if k in planar:
+            continue
         if abs(v[i]) <= scale:
             v[i] = _starting_direction(model, t0, y, p, vs_fn, i, k)
 

@@ -548,6 +548,10 @@ def simulate(
 
         eqs = regularized_equations(eqs, friction_epsilon)
         switches = []
+    if eqs.planar_friction:  # friction over a surface: exact |v| (floored) or regularized sqrt(|v|² + ε²)
+        from ..codegen.rough_friction import planar_friction_for
+
+        eqs = planar_friction_for(eqs, friction, friction_epsilon)
     if switches and eqs.m:
         raise TypeError("sign() switches (dry friction) with constraints: use friction='regularize'")
     params, constants, schedule = _split_inputs(eqs, params, inputs, (t0, t1), initial_state(eqs.coordinates,

@@ -80,7 +80,18 @@ class Rough:
 
     The friction force is ``μ N`` opposite to the sliding velocity ``sliding`` (an expression linear in
     the velocities, e.g. the speed along a wire); its generalized force is
-    ``−μ N sign(v_s) ∂v_s/∂q̇``. The normal force is ``N = |λ| · normal`` where ``normal`` (default 1)
+    ``−μ N sign(v_s) ∂v_s/∂q̇``.
+
+    **Sliding over a surface in any direction**: give ``sliding`` as a sequence of two (or three) components
+    ``(v_1, v_2)`` of the sliding velocity along orthonormal directions of the surface, each linear in the
+    velocities (a particle on a rough plane: ``(ẋ, ẏ)``; on a sphere of radius a in spherical coordinates:
+    ``(a θ̇, a sinθ φ̇)``). The friction is then ``−μ N v/|v|``, generalized force
+    ``−μ N Σ_i (v_i/|v|) ∂v_i/∂q̇``, and its power ``−μ N |v|``. With ``simulate(friction="events")``
+    (default) ``|v|`` is exact and the run ends when the sliding speed falls to 1e-9 (sticking is not
+    modelled, nor starting from rest); ``friction="regularize"`` uses ``sqrt(|v|² + ε²)`` with
+    ``ε = friction_epsilon``, as for ``sign()`` friction, and runs through stops.
+
+    The normal force is ``N = |λ| · normal`` where ``normal`` (default 1)
     converts the multiplier into the physical normal force: write φ as a signed distance (then
     ``normal = 1``) or give ``normal = |∇φ|`` in Cartesian terms. The friction depends on the unknown
     reaction, so it is solved together with the accelerations each step. Sticking (static friction)
@@ -89,11 +100,13 @@ class Rough:
 
     expr: sp.Expr
     mu: sp.Expr
-    sliding: sp.Expr
+    sliding: sp.Expr | tuple
     name: str = ""
     normal: sp.Expr = sp.S.One
 
     def __post_init__(self):
+        if isinstance(self.sliding, (list, tuple, sp.MatrixBase)):  # planar friction: components, kept as a tuple
+            object.__setattr__(self, "sliding", tuple(_sympify(v) for v in self.sliding))
         normalize_fields(self)
 
 
@@ -135,7 +148,14 @@ class ConstraintSpec:
     position: sp.Expr | None
     unilateral: bool = False
     integrable: bool = False
-    friction: tuple | None = None  # (mu, sliding velocity, normal factor) for rough constraints
+    friction: tuple | None = None  # (mu, sliding velocity or tuple of components, normal factor) for rough ones
+
+
+def _linear_velocity(vs, coords) -> bool:
+    """True when ``vs`` contains velocities and is linear in them."""
+    vs = _sympify(vs)
+    return bool(vs.atoms(sp.Derivative)) and not any(
+        sp.diff(vs, q.diff(t)).has(*[p.diff(t) for p in coords]) for q in coords)
 
 
 def _velocity_level(phi, coords):
@@ -166,12 +186,20 @@ def normalize_constraints(constraints, coords: Sequence, problems: list) -> tupl
         declared = type(c).__name__ if isinstance(c, (Holonomic, Nonholonomic, Differential, Rough)) else None
         friction = None
         if isinstance(c, Rough):
-            vs = _sympify(c.sliding)
-            if not vs.atoms(sp.Derivative) or any(sp.diff(vs, q.diff(t)).has(*[p.diff(t) for p in coords])
-                                                   for q in coords):
-                problems.append(f"{label}: the sliding velocity {vs} must be linear in the velocities")
+            planar = isinstance(c.sliding, tuple)
+            comps = c.sliding if planar else (_sympify(c.sliding),)
+            if planar and len(comps) not in (2, 3):
+                problems.append(f"{label}: a sliding velocity over a surface has 2 (or 3) components, got "
+                                f"{len(comps)}")
                 continue
-            friction = (_sympify(c.mu), vs, _sympify(c.normal))
+            bad = [vs for vs in comps if not _linear_velocity(vs, coords)]
+            if bad:
+                what = "component" if planar else "velocity"
+                problems.append(f"{label}: the sliding {what} {bad[0]} must be linear in the velocities (for friction "
+                                "over a surface give the components of the sliding velocity, e.g. (ẋ, ẏ); |v| is "
+                                "formed by the engine)")
+                continue
+            friction = (_sympify(c.mu), c.sliding if planar else comps[0], _sympify(c.normal))
             c = Holonomic(c.expr, c.name)
             declared = "Holonomic"
         unilateral = bool(getattr(c, "unilateral", False))
