@@ -26,8 +26,6 @@ NOTES: dict[str, tuple[str, str]] = {
              "('are q1, y3 inertial?') is qualitative. The same coordinates are checked through T in P2.22."),
     "p2.5": (NOT_CHECKABLE, f"Axes on two nested tables in an accelerating car: {_TRANSFORM}."),
     "p2.8": (NOT_CHECKABLE, f"Spherical coordinates attached to a car on a circular track: {_TRANSFORM}."),
-    "p2.11": (TO_ADD, "Degrees of freedom of two rigid bodies joined by a ball joint (9; 6 with a second joint to "
-              "a support): System.dof of the declared bodies and joint constraints."),
     "p2.12": (GAP, "Only the answer key's counts (5, 10) are transcribed; the problem's statement is not in the "
               "catalog."),
     "p2.17": (GAP, "Three hinged rods (Fig. 2-27): the answer gives x_2 and then 'etc.', and the figure's "
@@ -36,28 +34,16 @@ NOTES: dict[str, tuple[str, str]] = {
               "figure, which the catalog does not describe; the printed T cannot be rebuilt independently."),
     "p2.21": (GAP, "Fig. 2-15 pulleys in s-coordinates: the figure's rope and pulley layout is not in the "
               "catalog; the printed T cannot be rebuilt independently."),
-    "eq2.47": (TO_ADD, "Centre-of-mass theorem: T = T(c.m.) + T(relative) for a particle set."),
     "p4.24": (GAP, "P4.10 by D'Alembert's equation, 'same answer as P4.10': P4.10's answer is not transcribed in "
               "the catalog (its system is in the corpus as P13.16/P16.7, whose answers are checked)."),
     "p5.16": (SERIES, "Prove (5.13), the second-order expansion of a spring group's V about equilibrium: the "
               "series expansion of a potential about a point is being added on another branch."),
-    "ex6.4": (TO_ADD, "Thin rod sliding on a rough plane: F_x as an integral over the rod (catalog-corrected "
-              "sign and factor l)."),
     "ex6.7": (NOT_CHECKABLE, "The general method for a board on a viscous film (the δW integrand of (6.8)); its "
               "instances Ex 6.8 (rectangle) and Ex 6.12 (any shape) are in the corpus."),
-    "ex6.13": (TO_ADD, "Rod with v^n drag: P as an integral along the rod (6.21)."),
-    "p6.15": (TO_ADD, "Ring on a rough plane: F_x as an integral around the ring (elliptic integrals)."),
-    "p6.19": (TO_ADD, "Dumbbell of two spheres in a viscous fluid: P (the book's translational ½a is "
-              "inconsistent, catalog correction)."),
-    "p6.25": (TO_ADD, "Rod with dry friction along its length: P as an integral (closed form available)."),
-    "p6.30": (TO_ADD, "Board with v^n drag, instantaneous-frame form (catalog: exponent (n+1)/2)."),
-    "p7.8": (TO_ADD, "Moment of inertia about a line through two points ((7.14) with the normalized "
-             "difference as direction)."),
     "p8.1": (NOT_CHECKABLE, f"Prove (8.0), the direction cosines of the normal to a plane: {_PROOF}."),
     "p8.2": (NOT_CHECKABLE, f"v² = ω²h² for two superposed rotations: {_PROOF}."),
     "ex9.6": (TO_ADD, "The rolling disk of Ex 8.11 by Euler's equations: c.m. acceleration (2) and the "
               "equation of motion (10)."),
-    "p9.6": (TO_ADD, "A_x, A_y, A_z of Ex 9.4 (1) from the transformation equations (rod on a rotating arm)."),
     "p9.17": (GAP, "Derive Ex 9.7 (6), (7) from the inertial forces: Ex 9.7's equations are not transcribed "
               "in the catalog."),
     "p9.22": (NOT_CHECKABLE, f"Angular momentum about a line is the projection of the vector: {_PROOF}."),
@@ -72,7 +58,6 @@ NOTES: dict[str, tuple[str, str]] = {
                "angles) is not transcribed in the catalog."),
     "p14.1": (ELLIPSOID, "R1 and g' at 45° latitude from the ellipsoid formulas (14.1)-(14.9)."),
     "p14.33": (ELLIPSOID, "The plumb-line deflection α from the ellipsoid formulas (see Table 14.1)."),
-    "p17.12": (TO_ADD, "(14.15), the equations of motion in the earth frame, by Hamilton's principle."),
     "app.a8m": (NOT_CHECKABLE, f"Composition of direction-cosine matrices γ = αβ: {_PROPERTY} "
                 "(tests/test_rigid_body.py, rotation sequences against their matrix)."),
     "sec18.fq": (NOT_CHECKABLE, f"F_q = Σ F·∂r/∂q against virtual work: {_PROPERTY} (every GeneralizedForces "
