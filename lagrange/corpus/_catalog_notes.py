@@ -42,8 +42,6 @@ NOTES: dict[str, tuple[str, str]] = {
               "instances Ex 6.8 (rectangle) and Ex 6.12 (any shape) are in the corpus."),
     "p8.1": (NOT_CHECKABLE, f"Prove (8.0), the direction cosines of the normal to a plane: {_PROOF}."),
     "p8.2": (NOT_CHECKABLE, f"v² = ω²h² for two superposed rotations: {_PROOF}."),
-    "ex9.6": (TO_ADD, "The rolling disk of Ex 8.11 by Euler's equations: c.m. acceleration (2) and the "
-              "equation of motion (10)."),
     "p9.17": (GAP, "Derive Ex 9.7 (6), (7) from the inertial forces: Ex 9.7's equations are not transcribed "
               "in the catalog."),
     "p9.22": (NOT_CHECKABLE, f"Angular momentum about a line is the projection of the vector: {_PROOF}."),
