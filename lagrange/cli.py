@@ -498,10 +498,25 @@ def _cmd_check(args) -> int:
     return 0 if result.ok or not result.applicable else 1
 
 
+def _print_coverage(chapter: int | None) -> None:
+    from .corpus import coverage
+
+    rows = [r for r in coverage.chapter_coverage() if chapter is None or r.chapter == chapter]
+    print("corpus coverage by chapter (misprints: problems recording a correction; [FULL]: the catalog's cases "
+          "with a complete answer, see docs/coverage.md):")
+    print(coverage.format_table(rows))
+
+
 def _cmd_verify(args) -> int:
     from .corpus.registry import all_problems, get_problem
     from .progress import track
 
+    if args.coverage:
+        if args.ids:
+            raise SpecError("verify --coverage prints the coverage of the whole corpus (or of --chapter); "
+                            "give no problem ids with it")
+        _print_coverage(args.chapter)
+        return 0
     if args.ids:
         probs = [get_problem(i) for i in args.ids]
         if args.chapter is not None:
@@ -526,6 +541,8 @@ def _cmd_verify(args) -> int:
                 print(f"ok   {p.id}: {r.answer}")
     checks = sum(len(p.answers) for p in probs)
     print(f"{len(probs)} problems, {checks} answers checked, {failed} failed")
+    if not args.ids:
+        _print_coverage(args.chapter)
     return 1 if failed else 0
 
 
@@ -793,6 +810,8 @@ def _parser() -> argparse.ArgumentParser:
     p.add_argument("--chapter", type=int)
     p.add_argument("-v", "--verbose", action="store_true")
     p.add_argument("-q", "--quiet", action="store_true", help="no progress reports")
+    p.add_argument("--coverage", action="store_true",
+                   help="only print the corpus coverage by chapter (printed after a check of all problems too)")
     p.set_defaults(func=_cmd_verify)
     return ap
 

@@ -1,32 +1,27 @@
 """Wells, Problem 14.24 — equations of motion from the cylindrical-coordinate T (14.17) on the rotating earth.
 
-x1 = rho cos(phi), y1 = rho sin(phi), z1 = z in the earth frame of Fig. 14-2; gravity by the true g (EarthFrame).
-The R omega_e^2 terms cancel against the true gravity, leaving -m g' on the z equation.
+The system is Sec. 14.5's (``ch14_eq14_17``: x1 = rho cos(phi), y1 = rho sin(phi), z1 = z in the earth frame of
+Fig. 14-2, gravity by the true g through EarthFrame); this problem checks its equations of motion. The R omega_e^2
+terms cancel against the true gravity, leaving -m g' on the z equation.
 """
 
 import sympy as sp
+from lagrange_problems import ch14_eq14_17 as sec14_5
+from lagrange_problems._common import variant
 
-from lagrange import Force, Particle, System, coordinates, parameters, t
-from lagrange.corpus import EquationsOfMotion, Problem, Simulation
-from lagrange.model.frames import EarthFrame
+from lagrange import t
+from lagrange.corpus import EquationsOfMotion
 
-rho, phi, z = coordinates("rho phi z")
-m, gp, w, R, Phi = parameters("m g_prime omega_e R Phi")
-sF, cF = sp.sin(Phi), sp.cos(Phi)
-sp_, cp_ = sp.sin(phi), sp.cos(phi)
+rho, phi, z = sec14_5.rho, sec14_5.phi, sec14_5.z
+m, gp, w = sec14_5.m, sec14_5.gp, sec14_5.w
+sF, cF, sp_, cp_ = sec14_5.sF, sec14_5.cF, sec14_5.sp_, sec14_5.cp_
 rd, pd, zd = rho.diff(t), phi.diff(t), z.diff(t)
 
-E = EarthFrame(Phi, w, R)
-p = Particle(m, E.point((rho * cp_, rho * sp_, z)), name="particle")
-system = System([rho, phi, z], bodies=[p], forces=[Force(p, E.gravity_force(m, gp))],
-                name="particle in cylindrical coordinates on the rotating earth")
-
-PROBLEM = Problem(
+PROBLEM = variant(
+    sec14_5.PROBLEM,
     id="p14.24",
     title="Equations of motion in cylindrical coordinates on the rotating earth (from 14.17)",
-    chapter=14,
     source="Wells, Problem 14.24",
-    system=system,
     answers=[
         EquationsOfMotion(
             [
@@ -44,12 +39,6 @@ PROBLEM = Problem(
             per_equation=False,
         ),
     ],
-    simulation=Simulation(
-        params={m: 1.0, gp: 980.0, w: 7.29211e-5, R: 6.378e8, Phi: 0.7854},
-        initial={rho: 100.0, phi: 0.3, z: 0.0, rd: 10.0, pd: 0.1, zd: 50.0},
-        t_end=2,
-    ),
-    units="cgs in the simulation",
     correction="phi equation: the book prints '2 m rho phi_dot'; the term is 2 m rho_dot phi_dot (d/dt of "
     "m rho^2 phi_dot, divided by rho; dimensionally the printed term lacks a time derivative). Re-derived in the "
     "catalog (sym check).",

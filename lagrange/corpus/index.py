@@ -12,8 +12,9 @@ module without importing anything (``tests/problems/test_corpus_index.py`` runs 
 rebuilds the index by importing every module and compares).
 
 Index format (JSON): ``{"version": 1, "problems": [{"id", "title", "chapter", "source", "module",
-"system", "dynamics"}, …], "modules": {module name: sha256}, "greenspan": [{"number", "V", "alpha_deg",
-"masses"}, …]}``; problems in corpus order (chapter, then the numbers in the id).
+"system", "dynamics", "answers" (how many), "correction" (a misprint is recorded)}, …],
+"modules": {module name: sha256}, "greenspan": [{"number", "V", "alpha_deg", "masses"}, …]}``;
+problems in corpus order (chapter, then the numbers in the id).
 """
 
 from __future__ import annotations
@@ -36,7 +37,7 @@ PACKAGE = "lagrange_problems"
 INDEX_NAME = "_index.json"
 VERSION = 1
 
-IndexEntry = dict  # {"id", "title", "chapter", "source", "module", "system", "dynamics"}
+IndexEntry = dict  # {"id", "title", "chapter", "source", "module", "system", "dynamics", "answers", "correction"}
 
 
 def _package_dir() -> Path:
@@ -135,7 +136,8 @@ def build_index(folder: Path | None = None) -> dict:
         raise SpecError(f"problem id(s) {', '.join(dups)} defined twice in the corpus")
     found.sort(key=lambda pn: _sort_key(pn[0]))
     problems = [{"id": p.id, "title": p.title, "chapter": int(p.chapter), "source": p.source, "module": name,
-                 "system": p.system is not None, "dynamics": p.simulation is not None} for p, name in found]
+                 "system": p.system is not None, "dynamics": p.simulation is not None,
+                 "answers": len(p.answers), "correction": bool(p.correction)} for p, name in found]
     greenspan = [{"number": ex.number, "V": float(ex.V), "alpha_deg": float(ex.alpha_deg),
                   "masses": [float(m) for m in ex.masses]} for ex in EXAMPLES.values()]
     return {"version": VERSION, "problems": problems, "modules": {n: _digest(p) for n, p in files.items()},
