@@ -439,7 +439,7 @@ def _cmd_sweep(args) -> int:
     table = _sweep_table(args, over, common)
     wall = time.perf_counter() - t0
     counts = table["status"].value_counts().to_dict()
-    print(table.drop(columns=["run_id"]).to_string(max_rows=40))
+    print(table.drop(columns=["run_id", "run_config"], errors="ignore").to_string(max_rows=40))
     print(f"{len(table)} runs: " + ", ".join(f"{v} {k}" for k, v in sorted(counts.items())) +
           f"; {wall:.1f} s ({len(table) / wall:.2f} runs/s)")
     if args.out:
