@@ -30,6 +30,7 @@ and ``partial``. Chunking does not change the result (bit-identical to one unint
 
 from __future__ import annotations
 
+import dataclasses
 import importlib.util
 import os
 import time
@@ -327,8 +328,11 @@ def integrate_compiled(model: NumericModel, method: str, t_span, y0, t_eval, *, 
     res = run_loop(model, method, t_span, z0, t_eval, rtol=rtol, atol=atol, max_step=max_step,
                    max_steps=max_steps)
     ok = res.status is LoopStatus.SUCCESS
-    if res.status is LoopStatus.INTERRUPTED:
+    if res.status is LoopStatus.INTERRUPTED:  # the output times reached, then the state reached
         message = f"interrupted by Ctrl-C at t={res.t_reached:.9g} ({res.steps} steps)"
+        if not len(res.t) or res.t[-1] != res.t_reached:
+            res = dataclasses.replace(res, t=np.append(res.t, res.t_reached),
+                                      z=np.vstack([res.z.reshape(len(res.t), -1), res.z_reached]))
     else:
         message = f"{res.status.message if ok else 'stopped early'} ({res.steps} steps, {res.rejected} rejected)"
     traj = Trajectory(t=res.t, y=res.z[:, :n2].copy(), model=model, method=label or f"{method} (compiled loop)",
