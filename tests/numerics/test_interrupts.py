@@ -275,3 +275,60 @@ def test_interrupted_is_a_keyboard_interrupt_not_an_exception():
     assert isinstance(exc, KeyboardInterrupt) and not isinstance(exc, Exception) and exc.partial is None
     assert lg.IntegrationInterrupted is IntegrationInterrupted
 
+
+
+def _boxing_failure():
+    """What numba raises when Ctrl-C arrives while it boxes a result through Python (the pending signal
+    raises in ``_numba_unpickle``)."""
+    try:
+        raise KeyboardInterrupt
+    except KeyboardInterrupt as ki:
+        err = SystemError("CPUDispatcher(<function rhs>) returned a result with an exception set")
+        err.__cause__ = ki
+        return err
+
+
+def test_interrupt_of_recognizes_numba_boxing_failures():
+    from lagrange.integrate.stepper import interrupt_of
+
+    err = _boxing_failure()
+    assert interrupt_of(err) is err.__cause__
+    assert interrupt_of(SystemError("other")) is None and interrupt_of(ValueError("x")) is None
+
+
+def test_boxing_failure_in_scipy_and_ensemble_runs_is_an_interrupt(monkeypatch):
+    import dataclasses
+
+    from lagrange.sweep import integrate_ensemble
+
+    x = lg.coordinates("x")
+    osc = lg.System([x], T=x.diff(lg.t) ** 2 / 2, V=x**2 / 2)
+    model = osc.compile({})
+    calls = {"n": 0}
+
+    def failing(*args):
+        calls["n"] += 1
+        if calls["n"] == 100:
+            raise _boxing_failure()
+        return model.dynamics(*args)
+
+    with pytest.raises(IntegrationInterrupted) as info:
+        osc.simulate(10.0, {"x": 1.0, "x_dot": 0.0}, {}, model=dataclasses.replace(model, dynamics=failing),
+                     n_points=11, method="RK45")
+    assert info.value.partial is not None and 0 < info.value.t < 10
+    many = model.rhs_many
+    calls["n"] = 0
+
+    def failing_many(*args):
+        calls["n"] += 1
+        if calls["n"] == 30:
+            raise _boxing_failure()
+        return many(*args)
+
+    monkeypatch.setattr(type(model), "rhs_many", lambda self, *a: failing_many(*a))
+    with pytest.raises(KeyboardInterrupt):
+        integrate_ensemble(model, 10.0, [[1.0, 0.0], [0.5, 0.0]])
+    monkeypatch.undo()
+    with pytest.raises(SystemError):  # a SystemError of another cause is not mistaken for Ctrl-C
+        osc.simulate(1.0, {"x": 1.0, "x_dot": 0.0}, {}, model=dataclasses.replace(
+            model, dynamics=lambda *a: (_ for _ in ()).throw(SystemError("bug"))), n_points=3)
