@@ -226,3 +226,21 @@ def test_ctrl_c_stops_a_process_pool_sweep(tmp_path):
     import pandas as pd
 
     assert sorted(pd.read_csv(store)["a"]) == [0.0, 1.0]  # the finished rows are kept for resume=True
+
+
+def _crash_at_2_slowly(point):
+    time.sleep(1.0)  # the healthy runs are on the worker when the crashing one kills it
+    return _crash_at_2(point)
+
+
+@pytest.mark.slow
+def test_killed_worker_on_a_dask_cluster_blames_only_the_crashing_run():
+    distributed = pytest.importorskip("distributed")
+    import dask
+
+    with dask.config.set({"distributed.scheduler.allowed-failures": 0}), \
+            distributed.LocalCluster(n_workers=1, processes=True, threads_per_worker=3,
+                                     dashboard_address=None) as cluster, distributed.Client(cluster) as client:
+        table = lg.sweep(_crash_at_2_slowly, {"a": [1.0, 2.0, 3.0]}, executor=client, progress=False)
+    assert table["status"].tolist() == ["ok", "died", "ok"], table[["a", "status", "error"]]
+    assert table["y"].tolist()[::2] == [1.0, 9.0]
