@@ -319,6 +319,9 @@ def integrate_compiled(model: NumericModel, method: str, t_span, y0, t_eval, *, 
     IntegrationError
         The loop stopped early (:class:`LoopStatus`); ``t``, ``state`` and ``partial`` say where and
         what was computed.
+    IntegrationInterrupted
+        Ctrl-C (acted on between chunks, :func:`run_in_chunks`); the same ``t``, ``state`` and ``partial``
+        (the output times reached, then the state reached).
     """
     eqs = model.equations
     n2 = 2 * eqs.n

@@ -62,6 +62,9 @@ def integrate_fixed(system, t_span, y0, params, *, method: str, step: float, n_p
         non-finite state or an arithmetic error appeared. The message names the method, the step number,
         its time and the state before it; ``t``/``state`` are that time and state and ``partial`` is the
         trajectory up to it (the recorded states plus the last good one).
+    IntegrationInterrupted
+        Ctrl-C: within about a second in both loops (the compiled one runs in chunks of bounded work,
+        bit-identical to one call); ``partial`` holds the recorded states and the state reached.
     """
     t0, t1 = t_span
     if not (step and step > 0 and math.isfinite(step)):
