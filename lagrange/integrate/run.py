@@ -528,9 +528,10 @@ def simulate(
         it stopped and ``partial`` is the Trajectory computed up to there (its last point is the last
         accepted step).
     IntegrationInterrupted
-        Ctrl-C (SIGINT) during the run, on every route: raised within about a second (the compiled loops run
-        in chunks of bounded work), a :class:`KeyboardInterrupt` (not a LagrangeError) carrying the same
-        ``t``, ``state`` and ``partial`` (the trajectory up to the interrupt, ``success=False``).
+        Ctrl-C (SIGINT) during a scipy, compiled RK or geometric run (the Taylor loops: see
+        :mod:`lagrange.integrate.taylor`): raised within about a second (the compiled loops run in chunks of
+        bounded work), a :class:`KeyboardInterrupt` (not a LagrangeError) carrying the same ``t``, ``state``
+        and ``partial`` (the trajectory up to the interrupt, ``success=False``).
     """
     from .switching import run_switched, switching_functions
 
