@@ -45,6 +45,7 @@ _EXPORTS: dict[str, str] = {
     "InconsistentConstraintError": ".errors",
     "InitialConditionError": ".errors",
     "IntegrationError": ".errors",
+    "IntegrationInterrupted": ".errors",
     "LagrangeError": ".errors",
     "ParameterError": ".errors",
     "SingularMassMatrixError": ".errors",

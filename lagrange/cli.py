@@ -1,6 +1,7 @@
 """The ``lagrange`` command line: parses arguments and calls the library (no logic of its own).
 
-Errors are one line on stderr and a non-zero exit (2 for bad input, 3 for an internal failure);
+Errors are one line on stderr and a non-zero exit (2 for bad input, 3 for an internal failure, 130 after
+Ctrl-C: ``simulate --csv`` then writes the trajectory computed up to the interrupt);
 set ``LAGRANGE_DEBUG=1`` to see tracebacks. A closed pipe (``lagrange simulate ex3.4 | head -2``) ends the
 command quietly. Nothing heavy is imported before the arguments are parsed (``lagrange --help`` and
 ``lagrange problems`` load no sympy, numpy or scipy: the problem list comes from the corpus index,
@@ -18,9 +19,10 @@ import argparse
 import math
 import os
 import sys
+from contextlib import contextmanager
 
 from . import __version__
-from .errors import LagrangeError, SpecError
+from .errors import IntegrationInterrupted, LagrangeError, SpecError
 from .integrate.methods import ADAPTIVE, FIXED_STEP, SCIPY
 from .spec.options import check_names, merge_run_options, parse_assignments
 
@@ -241,7 +243,7 @@ def _simulate(args) -> int:
     inputs = _input_values(spec, args, params)
     if inputs:
         options["inputs"] = inputs
-    with heartbeat(f"integrating {label} to t = {float(t_end):g} with {options['method']}"):
+    with heartbeat(f"integrating {label} to t = {float(t_end):g} with {options['method']}"), _partial_csv(args):
         sol = spec.system.simulate(float(t_end), initial, params, **options)
     print(f"{spec.label}: {spec.system!r}")
     print(f"method {sol.method}, {sol.nfev} right-hand-side evaluations, {len(sol.t)} output points")
@@ -255,6 +257,22 @@ def _simulate(args) -> int:
     print(f"{label_e} (relative): {sol.energy_error():.3e}")
     _outputs(args, spec, sol)
     return 0
+
+
+@contextmanager
+def _partial_csv(args):
+    """On Ctrl-C during the run: write the partial trajectory to ``--csv`` (when given) and say so in the
+    interrupt's message, which :func:`main` prints on one line before exiting with 130."""
+    try:
+        yield
+    except IntegrationInterrupted as exc:
+        t_text = f" at t={exc.t:.6g}" if exc.t is not None else ""
+        if args.csv and exc.partial is not None:
+            exc.partial.to_csv(args.csv)
+            exc.cli_message = f"interrupted{t_text}; the partial trajectory is written to {args.csv}"
+        else:
+            exc.cli_message = f"interrupted{t_text}"
+        raise
 
 
 def _outputs(args, spec, sol) -> None:
@@ -312,7 +330,8 @@ def _greenspan_rigid(args, spec, t_end: float, params: dict, initial: dict, opti
                         f"event), which the fixed-step methods do not support; use an adaptive method "
                         f"({', '.join(ADAPTIVE)})")
     options = {"rtol": 1e-10, "atol": 1e-12, **options}
-    with heartbeat(f"integrating {spec.label} (rigid model) to t = {t_end:g} with {options['method']}"):
+    with heartbeat(f"integrating {spec.label} (rigid model) to t = {t_end:g} with {options['method']}"), \
+            _partial_csv(args):
         _, sol, verts = run_rigid(spec.problem, t_end, params=params, initial=initial, **options)
     fall = [float(e[0]) for e in sol.t_events if len(e)]
     _greenspan_report(f"{spec.label} (rigid model, 5 DOF, {sol.method}, rtol {options['rtol']:g}, atol "
@@ -420,7 +439,7 @@ def _cmd_sweep(args) -> int:
     table = _sweep_table(args, over, common)
     wall = time.perf_counter() - t0
     counts = table["status"].value_counts().to_dict()
-    print(table.drop(columns=["run_id"]).to_string(max_rows=40))
+    print(table.drop(columns=["run_id", "run_config"], errors="ignore").to_string(max_rows=40))
     print(f"{len(table)} runs: " + ", ".join(f"{v} {k}" for k, v in sorted(counts.items())) +
           f"; {wall:.1f} s ({len(table) / wall:.2f} runs/s)")
     if args.out:
@@ -828,7 +847,7 @@ def _silence_stdout() -> None:
 
 def main(argv: list[str] | None = None) -> int:
     """Run the ``lagrange`` command; returns the exit status (0 ok, 1 a check failed, 2 bad input,
-    3 internal error, 141 the output pipe was closed)."""
+    3 internal error, 130 interrupted by Ctrl-C, 141 the output pipe was closed)."""
     try:
         args = _parser().parse_args(argv)
         _check_outputs(args)
@@ -845,7 +864,8 @@ def main(argv: list[str] | None = None) -> int:
     except OSError as exc:  # a file that cannot be read or written (checked up front where possible)
         print(f"lagrange: error: {exc}", file=sys.stderr)
         return 2
-    except KeyboardInterrupt:  # pragma: no cover
+    except KeyboardInterrupt as exc:  # Ctrl-C: one line, exit 130 (simulate has written a partial --csv)
+        print(f"lagrange: {getattr(exc, 'cli_message', 'interrupted')}", file=sys.stderr)
         return 130
     except Exception as exc:  # noqa: BLE001 - one line, never a traceback, unless debugging
         if os.environ.get("LAGRANGE_DEBUG"):

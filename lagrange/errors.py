@@ -152,3 +152,23 @@ class CacheError(LagrangeError, PermissionError):
 class CacheIntegrityWarning(LagrangeWarning):
     """A cache entry failed authentication (planted, copied under another name, edited or damaged): it was
     ignored and rebuilt, never loaded. Issued once per process."""
+
+
+class IntegrationInterrupted(KeyboardInterrupt):
+    """A run stopped by Ctrl-C (SIGINT): every integration loop raises it within about a second of the signal.
+
+    It is a :class:`KeyboardInterrupt` (and deliberately *not* a :class:`LagrangeError`): ``except Exception``
+    and ``except LagrangeError`` handlers, a sweep's per-run error capture among them, must not swallow a
+    user's Ctrl-C. Like :class:`IntegrationError` it carries ``t`` and ``state`` (where the run was when it
+    stopped) and ``partial``, the :class:`~lagrange.results.trajectory.Trajectory` computed up to there
+    (``success=False``; None when nothing could be kept). Catching it as ``KeyboardInterrupt`` is enough.
+    """
+
+    def __init__(self, message: str, *, t: float | None = None, state: dict | None = None, partial=None):
+        self.t = t
+        self.state = state
+        self.partial = partial
+        super().__init__(message)
+
+
+__all__ += ["IntegrationInterrupted"]

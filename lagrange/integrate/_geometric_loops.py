@@ -4,16 +4,19 @@ A model enters through the three generated functions of :mod:`lagrange.codegen.h
 passed as numba first-class functions (:data:`MASS`, :data:`LAGRANGIAN`, :data:`SECOND`); from them this
 module evaluates ``q̇ = M⁻¹(p − b)`` (Cholesky), H, ∇H and the exact Hessian, and runs
 
-``run(scheme, mass, lagrangian, second, A, b, c, t0, h, steps, stride, z0, p, tol, max_iter)``
+``run(scheme, mass, lagrangian, second, A, b, c, t0, h, steps, stride, p, tol, max_iter, k_stop, z, T, Y,
+counts, info)``
 
-— ``steps`` fixed steps of size ``h`` from ``z0 = (q, p)``, recording ``[q, q̇]`` every ``stride``-th step
+— ``steps`` fixed steps of size ``h`` from ``z = (q, p)``, recording ``[q, q̇]`` every ``stride``-th step
 and after the last. ``scheme`` is :data:`GAUSS` (Gauss–Legendre collocation with the tableau ``A, b, c``:
 implicit midpoint, GL4, GL6), :data:`VERLET` (Störmer–Verlet) or :data:`DG` (Gonzalez' midpoint discrete
-gradient). It returns ``(status, k, residual, iterations, total, n_out, T, Y, z)``: a status of :data:`STATUS`,
-the step reached (the failed one when the status is not 0), the last Newton residual and the iteration
-count of that step, the total Newton iterations of the run, the recorded times and states ``T[:n_out]``, ``Y[:n_out]``
-(on failure the state before the failed step is the last row) and the state before the failed step (or the
-final state).
+gradient). It returns a status of :data:`STATUS` (or :data:`PAUSED` at step ``k_stop``) and keeps everything
+else in the arrays passed in, updated in place: the state ``z`` (before the failed step, or the final
+state), the recorded times and states ``T[:n_out]``, ``Y[:n_out]`` (on failure the state before the failed
+step is the last row), ``counts = [step reached (the failed one when the status is not 0), n_out, total
+Newton iterations, iterations of the last step]`` and ``info = [last Newton residual]``. A run is called in
+chunks of bounded work (:func:`lagrange.integrate.compiled.run_in_chunks`) so that Ctrl-C, which numba code
+cannot see, is acted on between chunks; the chunks give the same result bit for bit as one call.
 
 This is a transcription of the Python schemes (:mod:`lagrange.integrate.gauss_legendre`,
 :mod:`~lagrange.integrate.stormer_verlet`, :mod:`~lagrange.integrate.discrete_gradient` and
@@ -47,11 +50,14 @@ STATUS = ("success", "Newton did not converge", "Newton diverged (non-finite res
           "mass matrix not positive definite", "non-finite state")
 OK, NEWTON_MAX_ITER, NEWTON_DIVERGED, SINGULAR_JACOBIAN, SINGULAR_MASS, NON_FINITE = range(6)
 
-RUN = types.Tuple((types.int64, types.int64, types.float64, types.int64, types.int64, types.int64, _VEC, _MAT,
-                   _VEC))(
-    types.int64, FunctionType(MASS), FunctionType(LAGRANGIAN), FunctionType(SECOND), _MAT, _VEC, _VEC,
-    types.float64, types.float64, types.int64, types.int64, _VEC, _VEC, types.float64, types.int64)
-MOMENTA = _VEC(FunctionType(MASS), types.float64, _VEC, _VEC, _VEC)
+#: the signature of :func:`run`: the state lives in the arrays passed in, the result is the status alone (no
+#: array is boxed on return: boxing calls Python, which fails inside numba when a SIGINT is pending)
+RUN = types.int64(types.int64, FunctionType(MASS), FunctionType(LAGRANGIAN), FunctionType(SECOND), _MAT, _VEC,
+                  _VEC, types.float64, types.float64, types.int64, types.int64, _VEC, types.float64, types.int64,
+                  types.int64, _VEC, _VEC, _MAT, types.int64[::1], _VEC)
+MOMENTA = types.boolean(FunctionType(MASS), types.float64, _VEC, _VEC, _VEC, _VEC)
+#: the status of a run paused at the step ``k_stop`` (call again with the same arrays to go on)
+PAUSED = -1
 
 _OPTIONS = dict(cache=True, error_model="numpy")
 
@@ -340,8 +346,15 @@ def _record(mass, lagrangian, t, z, p, n, w, T, Y, k):
 
 
 @njit(RUN, **_OPTIONS)
-def run(scheme, mass, lagrangian, second, A, bb, c, t0, h, steps, stride, z0, p, tol, max_iter):
-    m = z0.size
+def run(scheme, mass, lagrangian, second, A, bb, c, t0, h, steps, stride, p, tol, max_iter, k_stop, z, T, Y, counts,
+        info):
+    """Steps ``counts[0]`` to ``min(k_stop, steps)`` of the run (see the module docstring); the state is in the
+    arguments, updated in place after every step: ``z``, the records ``T``, ``Y`` (``steps // stride + 3``
+    rows), ``counts = [next step k, n_out, total iterations, iterations of the last step]`` (all 0 for a new
+    run: the initial state is recorded first) and ``info = [last residual]``. Returns a status of
+    :data:`STATUS` (the failed step is ``counts[0]``) or :data:`PAUSED`; stepping on from a pause is
+    bit-identical to one uninterrupted run."""
+    m = z.size
     n = m // 2
     s = c.size
     w = (np.empty(n), np.empty(n), np.empty((n, n)), np.empty(n), np.empty(n), np.empty(m), np.empty((n, n)),
@@ -350,13 +363,13 @@ def run(scheme, mass, lagrangian, second, A, bb, c, t0, h, steps, stride, z0, p,
     K, R = np.empty(size), np.empty(size)
     Ys, Jac, Jf = np.empty((max(s, 1), m)), np.empty((size, size)), np.empty((m, m))
     zm, d = np.empty(m), np.empty(m)
-    z, znew = z0.copy(), np.empty(m)
-    n_rec = steps // stride + 3
-    T, Y = np.empty(n_rec), np.empty((n_rec, m))
-    _record(mass, lagrangian, t0, z, p, n, w, T, Y, 0)
-    n_out = 1
-    total = 0
-    for k in range(steps):
+    znew = np.empty(m)
+    if counts[1] == 0:
+        _record(mass, lagrangian, t0, z, p, n, w, T, Y, 0)
+        counts[1] = 1
+    n_out = counts[1]
+    total = counts[2]
+    for k in range(counts[0], min(k_stop, steps)):
         tk = t0 + k * h
         if scheme == GAUSS:
             status, its, rnorm = _gauss_step(mass, lagrangian, second, A, bb, c, tk, z, h, p, n, tol, max_iter, w, K,
@@ -374,24 +387,31 @@ def run(scheme, mass, lagrangian, second, A, bb, c, t0, h, steps, stride, z0, p,
             if T[n_out - 1] != tk:
                 _record(mass, lagrangian, tk, z, p, n, w, T, Y, n_out)
                 n_out += 1
-            return status, k, rnorm, its, total, n_out, T, Y, z
+            counts[0], counts[1], counts[3] = k, n_out, its
+            info[0] = rnorm
+            return status
         for j in range(m):
             z[j] = znew[j]
         total += its
         if (k + 1) % stride == 0 or k + 1 == steps:
             _record(mass, lagrangian, t0 + (k + 1) * h, z, p, n, w, T, Y, n_out)
             n_out += 1
-    return OK, steps, 0.0, 0, total, n_out, T, Y, z
+        counts[0], counts[1], counts[2], counts[3] = k + 1, n_out, total, its
+    if counts[0] < steps:
+        return PAUSED
+    info[0] = 0.0
+    counts[3] = 0
+    return OK
 
 
 @njit(MOMENTA, **_OPTIONS)
-def momenta(mass, t, q, v, p):
-    """``p = M(t, q) q̇ + b(t, q)``."""
+def momenta(mass, t, q, v, p, out):
+    """``out = p = M(t, q) q̇ + b(t, q)``; False when the model cannot evaluate M."""
     n = q.size
     M, b = np.empty((n, n)), np.empty(n)
-    mass(t, q, p, M, b)
-    out = b.copy()
+    ok = mass(t, q, p, M, b)
     for i in range(n):
+        out[i] = b[i]
         for j in range(n):
             out[i] += M[i, j] * v[j]
-    return out
+    return ok

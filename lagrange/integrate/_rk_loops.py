@@ -9,10 +9,15 @@ loops themselves are compiled eagerly for one signature and cached on disk by nu
 Import this module only through :func:`lagrange.integrate.compiled.loops`, which places it in lagrange's
 cache directory first (numba writes its cache next to the module; site-packages may be read-only).
 
-``dop853(field, t0, t1, z0, p, rtol, atol, max_step, first_step, t_eval, max_steps)`` and ``rk45(...)``
-return ``(status, t, z, Y, n_out, nfev, steps, rejected)``: the status code of
-:class:`lagrange.integrate.compiled.LoopStatus`, the time and state reached, the outputs ``Y[:n_out]`` at
-``t_eval[:n_out]`` and counters. No Python runs per step.
+``dop853(field, t1, p, rtol, atol, max_step, t_eval, max_steps, pause_at, y, f0, Y, fs, counts)`` and
+``rk45(...)`` return the status code of :class:`lagrange.integrate.compiled.LoopStatus` (or :data:`PAUSED`)
+and keep the run's state in the arrays passed in: the state ``y`` and its derivative ``f0``, the outputs
+``Y[:n_out]`` at ``t_eval[:n_out]``, ``fs = [t, h]`` and the counters ``counts`` (see :func:`_integrate`).
+No Python runs per step. A run pauses after ``pause_at`` accepted steps and goes on, bit-identically, when
+called again with the same arrays: :func:`lagrange.integrate.compiled.run_loop` calls it in chunks of bounded
+work so that Ctrl-C (which numba code cannot see) is acted on between chunks. Nothing but an integer is
+returned: boxing an array on return calls into Python (numba's ``_numba_unpickle``), and with a SIGINT pending
+that call raises inside numba's boxing code, which then fails (a ``SystemError``, or a segmentation fault).
 
 The loops reproduce scipy's ``DOP853`` and ``RK45`` (scipy/integrate/_ivp/rk.py) so ``rtol``/``atol`` mean
 the same thing: the same tableaux (read from scipy at import, stored as sparse rows so zero coefficients
@@ -45,11 +50,12 @@ from scipy.integrate._ivp import dop853_coefficients as _dop
 _VEC = types.float64[::1]
 #: the signature of a model's field: ``field(t, z, p, out) -> ok``
 FIELD = types.boolean(types.float64, _VEC, _VEC, _VEC)
-#: the signature of both loops
-LOOP = types.Tuple((types.int64, types.float64, _VEC, types.float64[:, ::1], types.int64, types.int64,
-                    types.int64, types.int64))(
-    FunctionType(FIELD), types.float64, types.float64, _VEC, _VEC, types.float64, types.float64, types.float64,
-    types.float64, _VEC, types.int64)
+#: the signature of both loops: the state lives in the arrays passed in (updated in place), the result is the
+#: status alone (no array is boxed on return: boxing calls Python, which fails when a signal is pending)
+LOOP = types.int64(FunctionType(FIELD), types.float64, _VEC, types.float64, types.float64, types.float64, _VEC,
+                   types.int64, types.int64, _VEC, _VEC, types.float64[:, ::1], _VEC, types.int64[::1])
+#: the status of a run paused after ``pause_at`` steps (call again to continue)
+PAUSED = -1
 
 
 def _sparse_rows(matrix) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -261,38 +267,50 @@ def _attempt(f, dop, S, A, B, C, order, t, t1, h_abs, direction, min_step, y, p,
 
 
 @njit(cache=True, error_model="numpy")
-def _integrate(f, dop, t0, t1, z0, p, rtol, atol, max_step, first_step, t_eval, max_steps):
-    """The driver shared by both methods (status codes: see LoopStatus)."""
+def _integrate(f, dop, t1, p, rtol, atol, max_step, t_eval, max_steps, pause_at, y, f0, Y, fs, counts):
+    """The driver shared by both methods (status codes: see LoopStatus, or :data:`PAUSED`).
+
+    The state of the run lives in the arguments and is updated in place after every accepted step, so a
+    run can be paused after ``pause_at`` accepted steps and continued by calling again with the same arrays,
+    bit-identically to an uninterrupted run: ``y`` the state, ``f0`` its derivative, ``Y`` the outputs,
+    ``fs = [t, h_abs]`` (on entry of a new run: ``[t0, first_step]``, ``first_step <= 0`` to select one) and
+    ``counts = [n_out, nfev, steps, rejected, started]`` (all 0 for a new run)."""
     S, A, B, C, order, n_k, n_f = ((DOP_S, DOP_A, DOP_B, DOP_C, DOP_ORDER, DOP_EXT, 3 + DOP_D[0].size - 1)
                                    if dop else (RK_S, RK_A, RK_B, RK_C, RK_ORDER, RK_S + 1, RK_P[0].size - 1))
-    nz = z0.size
+    nz = y.size
+    t, h_abs = fs[0], fs[1]
+    t0 = t
     direction = 1.0 if t1 >= t0 else -1.0
     K = np.empty((n_k, nz))
     F = np.empty((n_f, nz))
-    y = z0.copy()
     y_new = np.empty(nz)
     yt = np.empty(nz)
-    f0 = np.empty(nz)
     scale = np.empty(nz)
     w = np.empty(nz)
-    Y = np.empty((t_eval.size, nz))
-    n_out, steps, rejected, t = 0, 0, 0, t0
-    if not f(t, y, p, f0):
-        return 3, t, y, Y, n_out, 1, steps, rejected
-    nfev = 1
-    if not _all_finite(f0):
-        return 2, t, y, Y, n_out, nfev, steps, rejected
-    h_abs = first_step
-    if first_step <= 0.0:
-        nfev += 1
-        h_abs, ok = _initial_step(f, t0, y, f0, t1, max_step, rtol, atol, order, p, yt, K[1])
-        if not ok:
-            return 3, t, y, Y, n_out, nfev, steps, rejected
+    n_out, nfev, steps, rejected = counts[0], counts[1], counts[2], counts[3]
+    if counts[4] == 0:  # a new run: f(t0, y0) and the initial step
+        if not f(t, y, p, f0):
+            counts[1] = 1
+            return 3
+        nfev = 1
+        counts[1] = nfev
+        if not _all_finite(f0):
+            return 2
+        if h_abs <= 0.0:
+            nfev += 1
+            counts[1] = nfev
+            h_abs, ok = _initial_step(f, t0, y, f0, t1, max_step, rtol, atol, order, p, yt, K[1])
+            if not ok:
+                return 3
+        fs[1] = h_abs
+        counts[4] = 1
     status = 0
     while direction * (t - t1) < 0.0:
         if steps >= max_steps:
             status = 4
             break
+        if steps >= pause_at:
+            return PAUSED
         min_step = 10.0 * abs(np.nextafter(t, direction * np.inf) - t)
         if h_abs > max_step:
             h_abs = max_step
@@ -303,11 +321,13 @@ def _integrate(f, dop, t0, t1, z0, p, rtol, atol, max_step, first_step, t_eval, 
                                                   y, p, K, yt, y_new, scale, w, rtol, atol)
         rejected += n_rej
         nfev += S * (n_rej + (status != 1))
+        counts[1], counts[3] = nfev, rejected
         if status != 0:
             break
         steps += 1
         if n_out < t_eval.size and direction * (t_eval[n_out] - t_new) <= 0.0:
             nfev += n_k - S - 1
+            counts[1] = nfev
             if not _dense_prepare(f, dop, t, h, y, y_new, p, K, F, yt):
                 status = 3
                 break
@@ -317,16 +337,18 @@ def _integrate(f, dop, t0, t1, z0, p, rtol, atol, max_step, first_step, t_eval, 
         t = t_new
         y[:] = y_new
         f0[:] = K[S]
-    return status, t, y, Y, n_out, nfev, steps, rejected
+        fs[0], fs[1] = t, h_abs
+        counts[0], counts[2] = n_out, steps
+    return status
 
 
 @njit(LOOP, cache=True, error_model="numpy")
-def dop853(f, t0, t1, z0, p, rtol, atol, max_step, first_step, t_eval, max_steps):
-    """scipy's DOP853 with dense output at ``t_eval`` (see the module docstring)."""
-    return _integrate(f, True, t0, t1, z0, p, rtol, atol, max_step, first_step, t_eval, max_steps)
+def dop853(f, t1, p, rtol, atol, max_step, t_eval, max_steps, pause_at, y, f0, Y, fs, counts):
+    """scipy's DOP853 with dense output at ``t_eval`` (see the module docstring and :func:`_integrate`)."""
+    return _integrate(f, True, t1, p, rtol, atol, max_step, t_eval, max_steps, pause_at, y, f0, Y, fs, counts)
 
 
 @njit(LOOP, cache=True, error_model="numpy")
-def rk45(f, t0, t1, z0, p, rtol, atol, max_step, first_step, t_eval, max_steps):
-    """scipy's RK45 with dense output at ``t_eval`` (see the module docstring)."""
-    return _integrate(f, False, t0, t1, z0, p, rtol, atol, max_step, first_step, t_eval, max_steps)
+def rk45(f, t1, p, rtol, atol, max_step, t_eval, max_steps, pause_at, y, f0, Y, fs, counts):
+    """scipy's RK45 with dense output at ``t_eval`` (see the module docstring and :func:`_integrate`)."""
+    return _integrate(f, False, t1, p, rtol, atol, max_step, t_eval, max_steps, pause_at, y, f0, Y, fs, counts)

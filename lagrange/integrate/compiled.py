@@ -21,12 +21,20 @@ results agree with ``solve_ivp`` to round-off-level differences in the step sequ
 Failures inside the loop come back as a :class:`LoopStatus` with the time reached and the outputs up to
 there; :func:`integrate_compiled` raises :class:`~lagrange.errors.IntegrationError` carrying ``t``,
 ``state`` and ``partial`` (the :class:`~lagrange.results.trajectory.Trajectory` so far).
+
+Interrupts: the loop runs in chunks of about :data:`CHUNK_SECONDS` (:func:`run_in_chunks`), returning to
+Python in between, so Ctrl-C stops it within a fraction of a second; :func:`integrate_compiled` then raises
+:class:`~lagrange.errors.IntegrationInterrupted` (a KeyboardInterrupt) carrying the same ``t``, ``state``
+and ``partial``. Chunking does not change the result (bit-identical to one uninterrupted call).
 """
 
 from __future__ import annotations
 
+import dataclasses
 import importlib.util
+import time
 import warnings
+from collections.abc import Callable
 from dataclasses import dataclass
 from enum import Enum
 from functools import cache
@@ -36,18 +44,24 @@ from types import ModuleType
 import numpy as np
 
 from ..codegen.numeric import NumericModel
-from ..errors import BackendError, IntegrationError
+from ..errors import BackendError, IntegrationError, IntegrationInterrupted
 from ..model.coordinates import state_text
 from ..results.trajectory import Trajectory
 
 __all__ = ["LOOPS", "LOOP_METHODS", "LoopStatus", "LoopResult", "choose_loop", "loop_backend", "kernel", "loops",
-           "run_loop", "integrate_compiled", "stopped_error", "check_output_times", "first_class"]
+           "run_loop", "integrate_compiled", "stopped_error", "check_output_times", "first_class", "run_in_chunks",
+           "interrupted_error", "PAUSED", "CHUNK_SECONDS"]
 
 LOOPS = ("auto", "scipy", "compiled")
 #: the methods of the compiled loop (functions of the same name, lower case, in ``_rk_loops``)
 LOOP_METHODS = ("DOP853", "RK45")
 #: default cap on accepted steps of one compiled run
 MAX_STEPS = 10_000_000
+#: the status a compiled loop returns when it paused after the work it was given (call it again to go on)
+PAUSED = -1
+#: target wall time of one chunk of a compiled loop: Ctrl-C is acted on between chunks (numba code cannot
+#: check for signals), so this bounds the delay of an interrupt; the call overhead is a few µs per chunk
+CHUNK_SECONDS = 0.05
 
 
 class LoopStatus(Enum):
@@ -63,6 +77,7 @@ class LoopStatus(Enum):
                            "coordinate or gimbal lock) or a coordinate reaching a singular value")
     MAX_STEPS = (4, "the maximum number of steps was reached: raise max_steps, loosen rtol/atol or shorten "
                     "t_span")
+    INTERRUPTED = (5, "interrupted by Ctrl-C (SIGINT)")
 
     @classmethod
     def from_code(cls, code: int) -> LoopStatus:
@@ -246,14 +261,49 @@ def run_loop(model: NumericModel, method: str, t_span, z0, t_eval, *, rtol: floa
     if method not in LOOP_METHODS:
         raise TypeError(f"the compiled loop has the methods {', '.join(LOOP_METHODS)}, not {method!r}")
     field = _field(model)
-    loop = getattr(loops(), method.lower())
-    z0 = np.ascontiguousarray(z0, dtype=float)
+    kernels = loops()
+    loop = getattr(kernels, method.lower())
+    f = first_class(field, kernels.FIELD)
+    y = np.array(z0, dtype=float)  # the loop's state, updated in place (bounded chunks, see run_in_chunks)
+    f0 = np.empty_like(y)
+    Y = np.empty((t_eval.size, y.size))
+    fs = np.array([t0, float(first_step or 0.0)])
+    counts = np.zeros(5, dtype=np.int64)  # n_out, nfev, steps, rejected, started
     p = np.ascontiguousarray(model.params, dtype=float)
-    code, t_end, z_end, Y, n_out, nfev, steps, rejected = loop(
-        first_class(field, loops().FIELD), t0, t1, z0.copy(), p, rtol, atol, max_step, float(first_step or 0.0),
-        t_eval, int(max_steps))
-    return LoopResult(LoopStatus.from_code(int(code)), t_eval[:n_out].copy(), np.array(Y[:n_out]), float(t_end),
-                      np.array(z_end), int(nfev), int(steps), int(rejected))
+    max_steps = int(max_steps)
+
+    def chunk(n: int) -> int:
+        return loop(f, t1, p, rtol, atol, max_step, t_eval, max_steps, int(min(counts[2] + n, max_steps)), y, f0,
+                    Y, fs, counts)
+
+    code = run_in_chunks(chunk)
+    n_out = int(counts[0])
+    return LoopResult(LoopStatus.INTERRUPTED if code is None else LoopStatus.from_code(int(code)),
+                      t_eval[:n_out].copy(), Y[:n_out].copy(), float(fs[0]), y.copy(), int(counts[1]),
+                      int(counts[2]), int(counts[3]))
+
+
+def run_in_chunks(chunk: Callable[[int], int], first: int = 16) -> int | None:
+    """Run a compiled loop in chunks of bounded work until it ends; its status, or None after Ctrl-C.
+
+    ``chunk(n)`` runs at most ``n`` more units of work (accepted steps) of a loop whose whole state lives
+    in arrays it updates in place, and returns :data:`PAUSED` when there is more to do. ``n`` adapts so a
+    chunk takes about :data:`CHUNK_SECONDS`: numba code cannot check for signals, so Python's SIGINT handler
+    (which only sets a flag) is acted on between chunks, and a KeyboardInterrupt raised there leaves the
+    state of the last finished chunk intact, for the caller to report. A chunk ends only after a whole
+    step, so the result is bit-identical to one uninterrupted call.
+    """
+    n = first
+    try:
+        while True:
+            start = time.perf_counter()
+            status = chunk(n)
+            if status != PAUSED:
+                return status
+            elapsed = time.perf_counter() - start
+            n = max(1, min(8 * n, int(n * CHUNK_SECONDS / elapsed) if elapsed > 0 else 8 * n))
+    except KeyboardInterrupt:
+        return None
 
 
 def integrate_compiled(model: NumericModel, method: str, t_span, y0, t_eval, *, rtol: float, atol: float,
@@ -269,6 +319,9 @@ def integrate_compiled(model: NumericModel, method: str, t_span, y0, t_eval, *, 
     IntegrationError
         The loop stopped early (:class:`LoopStatus`); ``t``, ``state`` and ``partial`` say where and
         what was computed.
+    IntegrationInterrupted
+        Ctrl-C (acted on between chunks, :func:`run_in_chunks`); the same ``t``, ``state`` and ``partial``
+        (the output times reached, then the state reached).
     """
     eqs = model.equations
     n2 = 2 * eqs.n
@@ -278,12 +331,20 @@ def integrate_compiled(model: NumericModel, method: str, t_span, y0, t_eval, *, 
     res = run_loop(model, method, t_span, z0, t_eval, rtol=rtol, atol=atol, max_step=max_step,
                    max_steps=max_steps)
     ok = res.status is LoopStatus.SUCCESS
-    message = f"{res.status.message if ok else 'stopped early'} ({res.steps} steps, {res.rejected} rejected)"
+    if res.status is LoopStatus.INTERRUPTED:  # the output times reached, then the state reached
+        message = f"interrupted by Ctrl-C at t={res.t_reached:.9g} ({res.steps} steps)"
+        if not len(res.t) or res.t[-1] != res.t_reached:
+            res = dataclasses.replace(res, t=np.append(res.t, res.t_reached),
+                                      z=np.vstack([res.z.reshape(len(res.t), -1), res.z_reached]))
+    else:
+        message = f"{res.status.message if ok else 'stopped early'} ({res.steps} steps, {res.rejected} rejected)"
     traj = Trajectory(t=res.t, y=res.z[:, :n2].copy(), model=model, method=label or f"{method} (compiled loop)",
                       success=ok, message=message, nfev=res.nfev,
                       work=None if conservative else res.z[:, n2].copy(), initial=(float(t_span[0]), y0.copy()))
     if ok:
         return traj
+    if res.status is LoopStatus.INTERRUPTED:
+        raise interrupted_error(f"the compiled {method} loop", res.t_reached, res.z_reached, traj)
     raise stopped_error(f"the compiled {method} loop", res.status, res.t_reached, res.z_reached, traj)
 
 
@@ -295,6 +356,16 @@ def stopped_error(what: str, status: LoopStatus, t_reached: float, z_reached, pa
     return IntegrationError(
         f"{what} stopped at t={t_reached:.9g} ({state_text(coords, z_reached)}): {status.message}. The "
         f"trajectory up to there ({len(partial.t)} output points) is in the exception's `partial` attribute.",
+        t=float(t_reached), state=dict(zip(coords, np.asarray(z_reached)[:2 * len(coords)])), partial=partial)
+
+
+def interrupted_error(what: str, t_reached: float, z_reached, partial: Trajectory) -> IntegrationInterrupted:
+    """The :class:`~lagrange.errors.IntegrationInterrupted` of a run stopped by Ctrl-C at ``(t_reached,
+    z_reached)``, carrying ``partial`` (the trajectory up to there)."""
+    coords = partial.model.equations.coordinates
+    return IntegrationInterrupted(
+        f"{what} was interrupted (Ctrl-C) at t={t_reached:.9g} ({state_text(coords, z_reached)}); the trajectory "
+        f"up to there ({len(partial.t)} output points) is in the exception's `partial` attribute.",
         t=float(t_reached), state=dict(zip(coords, np.asarray(z_reached)[:2 * len(coords)])), partial=partial)
 
 

@@ -14,7 +14,7 @@ import math
 import numpy as np
 
 from ..conventions import VELOCITY_SUFFIX
-from ..errors import IntegrationError
+from ..errors import IntegrationError, IntegrationInterrupted
 from ..model.coordinates import coordinate_name
 from ..results.trajectory import Trajectory
 from .base import diverged, non_finite_state, not_converged, singular_jacobian, step_prefix
@@ -62,6 +62,9 @@ def integrate_fixed(system, t_span, y0, params, *, method: str, step: float, n_p
         non-finite state or an arithmetic error appeared. The message names the method, the step number,
         its time and the state before it; ``t``/``state`` are that time and state and ``partial`` is the
         trajectory up to it (the recorded states plus the last good one).
+    IntegrationInterrupted
+        Ctrl-C: within about a second in both loops (the compiled one runs in chunks of bounded work,
+        bit-identical to one call); ``partial`` holds the recorded states and the state reached.
     """
     t0, t1 = t_span
     if not (step and step > 0 and math.isfinite(step)):
@@ -92,27 +95,34 @@ def _run_python(hm, scheme, t0, h, steps, stride, y0, where) -> tuple[np.ndarray
     ts, zs = [t0], [z.copy()]
     iters = 0
     method = scheme.name
-    for k in range(steps):
-        tk = t0 + k * h
-        try:
-            z_new, it = scheme.step(tk, z, h)
-            if not np.all(np.isfinite(z_new)):
-                raise IntegrationError(non_finite_state(method, tk))
-        except (IntegrationError, ZeroDivisionError, OverflowError, ValueError, FloatingPointError,
-                np.linalg.LinAlgError) as exc:
-            if ts[-1] != tk:
-                ts.append(tk)
+    k, t_z = 0, t0
+    try:
+        for k in range(steps):
+            tk = t0 + k * h
+            try:
+                z_new, it = scheme.step(tk, z, h)
+                if not np.all(np.isfinite(z_new)):
+                    raise IntegrationError(non_finite_state(method, tk))
+            except (IntegrationError, ZeroDivisionError, OverflowError, ValueError, FloatingPointError,
+                    np.linalg.LinAlgError) as exc:
+                if ts[-1] != tk:
+                    ts.append(tk)
+                    zs.append(z.copy())
+                if isinstance(exc, np.linalg.LinAlgError):  # M singular at a stage point
+                    cause = step_prefix(method, tk, h) + SINGULAR_MASS
+                else:
+                    cause = str(exc) if isinstance(exc, IntegrationError) else f"{type(exc).__name__}: {exc}"
+                raise _step_fault(cause, k, tk, np.array(ts), _velocities(hm, ts, zs), where) from None
+            z, t_z = z_new, t0 + (k + 1) * h  # the state and its time change together
+            iters += it
+            if (k + 1) % stride == 0 or k + 1 == steps:
+                ts.append(t_z)
                 zs.append(z.copy())
-            if isinstance(exc, np.linalg.LinAlgError):  # M singular at a stage point
-                cause = step_prefix(method, tk, h) + SINGULAR_MASS
-            else:
-                cause = str(exc) if isinstance(exc, IntegrationError) else f"{type(exc).__name__}: {exc}"
-            raise _step_fault(cause, k, tk, np.array(ts), _velocities(hm, ts, zs), where) from None
-        z = z_new
-        iters += it
-        if (k + 1) % stride == 0 or k + 1 == steps:
-            ts.append(t0 + (k + 1) * h)
+    except KeyboardInterrupt:  # Ctrl-C: the records, and the last state reached
+        if ts[-1] != t_z:
+            ts.append(t_z)
             zs.append(z.copy())
+        raise _interrupted(int(round((t_z - t0) / h)), np.array(ts), _velocities(hm, ts, zs), where) from None
     return np.array(ts), _velocities(hm, ts, zs), iters
 
 
@@ -129,7 +139,7 @@ def _compiled_module(hm):
 def _run_compiled(hm, scheme, t0, h, steps, stride, y0, where) -> tuple[np.ndarray, np.ndarray, int]:
     """The compiled step loop: ``(T, Y = [q, q̇] rows, Newton iterations)``; a failed step raises as in
     :func:`_run_python`, with the same wording."""
-    from .compiled import first_class, kernel
+    from .compiled import first_class, kernel, run_in_chunks
 
     k = kernel("_geometric_loops.py", "geoloops", f"method={scheme.name!r} with loop='compiled'")
     mod = _compiled_module(hm)
@@ -138,16 +148,31 @@ def _run_compiled(hm, scheme, t0, h, steps, stride, y0, where) -> tuple[np.ndarr
     n = hm.n
     p = np.ascontiguousarray(hm.params, dtype=float)
     q0, v0 = np.ascontiguousarray(y0[:n], dtype=float), np.ascontiguousarray(y0[n:], dtype=float)
-    z0 = np.concatenate([q0, k.momenta(mass, float(t0), q0, v0, p)])
+    p0 = np.empty(n)
+    k.momenta(mass, float(t0), q0, v0, p, p0)
+    z = np.concatenate([q0, p0])  # the loop's state, updated in place chunk by chunk
     if isinstance(scheme, _Gauss):
         code, (A, b, c) = k.GAUSS, TABLEAUX[scheme.stages]
     else:
         code, A, b, c = (k.VERLET if isinstance(scheme, StormerVerlet) else k.DG), np.zeros((0, 0)), np.zeros(0), \
             np.zeros(0)
-    status, kf, rnorm, its, total, n_out, T, Y, z = k.run(
-        code, mass, lag, second, np.ascontiguousarray(A), np.ascontiguousarray(b), np.ascontiguousarray(c),
-        float(t0), float(h), int(steps), int(stride), z0, p, float(scheme.tol), int(scheme.max_iter))
+    A, b, c = np.ascontiguousarray(A), np.ascontiguousarray(b), np.ascontiguousarray(c)
+    n_rec = steps // stride + 3
+    T, Y = np.empty(n_rec), np.empty((n_rec, 2 * n))
+    counts, info = np.zeros(4, dtype=np.int64), np.zeros(1)
+
+    def chunk(size: int) -> int:
+        return k.run(code, mass, lag, second, A, b, c, float(t0), float(h), int(steps), int(stride), p,
+                     float(scheme.tol), int(scheme.max_iter), int(counts[0] + size), z, T, Y, counts, info)
+
+    status = run_in_chunks(chunk)
+    kf, n_out, total, its, rnorm = int(counts[0]), int(counts[1]), int(counts[2]), int(counts[3]), float(info[0])
     T, Y = np.array(T[:n_out]), np.array(Y[:n_out])
+    if status is None:  # Ctrl-C: the records, and the state reached
+        tk = t0 + kf * h
+        if T[-1] != tk:
+            T, Y = np.append(T, tk), np.vstack([Y, _velocities(hm, [tk], [z])])
+        raise _interrupted(kf, T, Y, where)
     if status == k.OK:
         return T, Y, int(total)
     tk = t0 + kf * h
@@ -175,6 +200,21 @@ def _velocities(hm, ts, zs) -> np.ndarray:
             v = np.full(n, np.nan)
         rows.append(np.concatenate([zi[:n], v]))
     return np.array(rows).reshape(len(ts), 2 * n)
+
+
+def _interrupted(k: int, T: np.ndarray, Y: np.ndarray, where) -> IntegrationInterrupted:
+    """Ctrl-C after ``k`` steps as :class:`~lagrange.errors.IntegrationInterrupted`, ``partial`` holding the
+    records ``T, Y`` (the last row the state reached)."""
+    t0, y0, model, label, steps = where
+    names = [coordinate_name(c) for c in model.equations.coordinates]
+    n = len(names)
+    partial = Trajectory(t=np.asarray(T, dtype=float), y=Y, model=model, method=f"{label} (interrupted)",
+                         success=False, message=f"interrupted by Ctrl-C after {k} of {steps} steps", nfev=k,
+                         work=None, initial=(t0, np.asarray(y0, dtype=float).copy()))
+    return IntegrationInterrupted(
+        f"{label} was interrupted (Ctrl-C) after {k} of {steps} steps, at t={T[-1]:.9g}; the trajectory up to "
+        f"there is in the exception's `partial` attribute.",
+        t=float(T[-1]), state=dict(zip(model.equations.coordinates, Y[-1, :n])), partial=partial)
 
 
 def _step_fault(cause: str, k: int, tk: float, T: np.ndarray, Y: np.ndarray, where) -> IntegrationError:

@@ -33,7 +33,7 @@ from ..results.trajectory import Trajectory
 from .constrained import STABILIZATIONS, Projector, baumgarte_rhs, consistent_initial
 from .rough import run_rough
 from .scipy_ivp import IMPLICIT_METHODS, SCIPY_METHODS, jacobian_function
-from .stepper import STEPPABLE, StepLog, recording, step_loop
+from .stepper import STEPPABLE, StepLog, interrupt_of, interrupted_run, recording, step_loop
 
 __all__ = ["simulate", "initial_state", "choose_method"]
 
@@ -527,6 +527,11 @@ def simulate(
         method. The message gives the time, the state and the likely cause; ``t`` and ``state`` say where
         it stopped and ``partial`` is the Trajectory computed up to there (its last point is the last
         accepted step).
+    IntegrationInterrupted
+        Ctrl-C (SIGINT) during a scipy, compiled RK or geometric run (the Taylor loops: see
+        :mod:`lagrange.integrate.taylor`): raised within about a second (the compiled loops run in chunks of
+        bounded work), a :class:`KeyboardInterrupt` (not a LagrangeError) carrying the same ``t``, ``state``
+        and ``partial`` (the trajectory up to the interrupt, ``success=False``).
     """
     from .switching import run_switched, switching_functions
 
@@ -637,6 +642,10 @@ def simulate(
             res = solve_ivp(f, (t0, t1), z0, t_eval=t_eval, events=all_events or None, **kwargs)
     except (IntegrationError, SingularMassMatrixError) as exc:  # a numerical fault mid-run: keep the results
         raise _with_partial(exc, model, log, conservative, t0, y0, method) from None
+    except (KeyboardInterrupt, SystemError) as exc:  # Ctrl-C: IntegrationInterrupted with the partial result
+        if interrupt_of(exc) is None:
+            raise
+        raise interrupted_run(model, log, conservative, t0, y0, method) from None
     except LagrangeError:
         raise
     except (ValueError, ZeroDivisionError, OverflowError, np.linalg.LinAlgError) as exc:

@@ -18,6 +18,9 @@ accepted state. When a run fails — an exception from the right-hand side (a si
 non-finite value, a math domain error) or a collapsed step size — the log still holds everything computed
 up to the last accepted step, which :mod:`lagrange.integrate.run` returns as the ``partial`` trajectory of
 the error. Both ``solve_ivp`` (which accepts a solver class as ``method``) and :func:`step_loop` use it.
+Ctrl-C during such a run (a KeyboardInterrupt raised in the right-hand side or in scipy's Python code) is
+turned by :func:`interrupted_run` into :class:`~lagrange.errors.IntegrationInterrupted` carrying the same
+partial trajectory.
 """
 
 from __future__ import annotations
@@ -28,7 +31,7 @@ import numpy as np
 from scipy.integrate import BDF, DOP853, LSODA, RK23, RK45, OdeSolver, Radau
 from scipy.optimize import brentq
 
-__all__ = ["step_loop", "STEPPABLE", "StepResult", "StepLog", "recording"]
+__all__ = ["step_loop", "STEPPABLE", "StepResult", "StepLog", "recording", "interrupt_of", "interrupted_run"]
 
 STEPPABLE = {"RK23": RK23, "RK45": RK45, "DOP853": DOP853, "Radau": Radau}
 
@@ -91,7 +94,8 @@ class StepLog:
     def arrays(self) -> tuple[np.ndarray, np.ndarray]:
         """``(t, Y)`` with Y of shape (m, n_state): the output times reached, then the last accepted state
         when it lies beyond them (the time where the run stopped)."""
-        ts, ys = list(self.t), list(self.y)
+        k = min(len(self.t), len(self.y))  # equal, unless Ctrl-C came between the two appends of accept()
+        ts, ys = list(self.t[:k]), list(self.y[:k])
         if self.last is not None and (not ts or (self.last[0] - ts[-1]) * self._dir > 0):
             ts.append(self.last[0])
             ys.append(self.last[1])
@@ -209,3 +213,38 @@ def step_loop(fun, t_span, y0, *, method: str, t_eval, events=None, post_step=No
     Y = np.array(out_y).T if out_y else np.empty((len(y0), 0))
     return StepResult(np.array(out_t), Y, int(solver.nfev), status, message, status >= 0,
                       [np.array(v) for v in t_events], [np.array(v) for v in y_events])
+
+
+def interrupt_of(exc: BaseException) -> KeyboardInterrupt | None:
+    """The KeyboardInterrupt behind ``exc``: itself, or the cause of a ``SystemError`` raised when Ctrl-C
+    arrived while numba boxed a compiled right-hand side's result (boxing calls Python, where the pending
+    signal raises; numba then reports "returned a result with an exception set"); else None."""
+    seen = 0
+    while exc is not None and seen < 8:
+        if isinstance(exc, KeyboardInterrupt):
+            return exc
+        if not isinstance(exc, SystemError):
+            return None
+        exc, seen = exc.__cause__ or exc.__context__, seen + 1
+    return None
+
+
+def interrupted_run(model, log: StepLog, conservative: bool, t0: float, y0, method: str):
+    """Ctrl-C during a scipy-driven run as :class:`~lagrange.errors.IntegrationInterrupted`, whose
+    ``partial`` is the trajectory up to the last accepted step (from ``log``; None before the first)."""
+    from ..errors import IntegrationInterrupted
+    from ..model.coordinates import state_text
+    from ..results.trajectory import Trajectory
+
+    n2 = 2 * model.n
+    T, Z = log.arrays()
+    coords = model.equations.coordinates
+    if not len(T):
+        return IntegrationInterrupted(f"the {method} run was interrupted (Ctrl-C) before its first step", t=t0)
+    partial = Trajectory(t=T, y=Z[:, :n2].copy(), model=model, method=f"{method} (interrupted)", success=False,
+                         message=f"interrupted by Ctrl-C at t={T[-1]:.9g}", nfev=log.steps,
+                         work=None if conservative else Z[:, n2].copy(), initial=(t0, np.array(y0).copy()))
+    return IntegrationInterrupted(
+        f"the {method} run was interrupted (Ctrl-C) at t={T[-1]:.9g} ({state_text(coords, Z[-1, :n2])}); the "
+        f"trajectory up to there ({len(T)} points) is in the exception's `partial` attribute.",
+        t=float(T[-1]), state=dict(zip(coords, Z[-1, :n2])), partial=partial)

@@ -20,9 +20,9 @@ JIT-compiled once per model (cached on disk): faster per step, for long and repe
 ``Trajectory.nfev`` counts tape passes (steps × order).
 
 Interrupts: the run proceeds in chunks of about :data:`CHUNK_SECONDS` of wall time; Ctrl-C (SIGINT) is
-answered between chunks with a ``KeyboardInterrupt`` whose ``partial`` attribute holds the trajectory up to
-there. Chunks do not change the result (a chunk resumes from the exact state and time where the last one
-stopped).
+answered between chunks with an :class:`~lagrange.errors.IntegrationInterrupted` (a ``KeyboardInterrupt``)
+whose ``partial`` attribute holds the trajectory up to there. Chunks do not change the result (a chunk
+resumes from the exact state and time where the last one stopped).
 
 Scope: unconstrained systems whose equations are analytic (no ``sign``/``Abs``/``Piecewise``); the work
 integral of non-conservative systems is integrated with the state. Needs a C compiler (at install or at run
@@ -43,7 +43,15 @@ import numpy as np
 from ..codegen.numeric import NumericModel
 from ..errors import BackendError, InputError
 from ..results.trajectory import Trajectory
-from .compiled import MAX_STEPS, LoopStatus, check_output_times, first_class, kernel, stopped_error
+from .compiled import (
+    MAX_STEPS,
+    LoopStatus,
+    check_output_times,
+    first_class,
+    interrupted_error,
+    kernel,
+    stopped_error,
+)
 
 __all__ = ["taylor_order", "interpreter", "available_interpreter", "integrate_taylor", "CHUNK_SECONDS", "ENGINES"]
 
@@ -214,9 +222,9 @@ def integrate_taylor(model: NumericModel, t_span, y0, t_eval, *, rtol: float, at
     IntegrationError
         The run stopped early (singular mass matrix, non-finite coefficients, collapsed step, too many
         steps); ``t``, ``state`` and ``partial`` say where and what was computed.
-    KeyboardInterrupt
-        Ctrl-C, answered within about :data:`CHUNK_SECONDS`; its ``partial`` attribute is the trajectory up
-        to there.
+    IntegrationInterrupted
+        Ctrl-C (a KeyboardInterrupt), answered within about :data:`CHUNK_SECONDS`; its ``partial`` attribute
+        is the trajectory up to there, ``t`` and ``state`` where the run stopped.
     """
     if model.schedule is not None:  # the tape holds the inputs as constants: never run as if they were absent
         raise InputError("method='taylor' cannot follow time-varying inputs (the model has a schedule; constant "
@@ -244,9 +252,9 @@ def integrate_taylor(model: NumericModel, t_span, y0, t_eval, *, rtol: float, at
         # interrupted while the engine was being loaded or compiled, nothing integrated yet: an empty partial
         nothing = (t0, z0, np.empty((t_eval.size, tape.nz)), 0, 0)
         t_end, z_end, Y, n_out, steps = getattr(exc, "_lagrange_partial", nothing)
-        exc.partial = _trajectory(model, tape, t_eval, Y, n_out, y0, t0, label, order, steps,
-                                  f"interrupted (Ctrl-C) at t={t_end:.9g}", False)
-        raise
+        partial = _trajectory(model, tape, t_eval, Y, n_out, y0, t0, label, order, steps,
+                              f"interrupted (Ctrl-C) at t={t_end:.9g}", False)
+        raise interrupted_error("the Taylor method", t_end, np.array(z_end), partial) from exc
     status = LoopStatus.from_code(int(code))
     ok = status is LoopStatus.SUCCESS
     message = (f"{status.message if ok else 'stopped early'} ({steps} Taylor steps of order {order}, "

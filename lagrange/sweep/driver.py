@@ -10,8 +10,9 @@ from typing import Any
 from ..errors import SweepError
 from .executor import run_points
 from .grid import grid_points, random_points, run_id
+from .identity import check_point_names, reserved_columns, run_config
 from .table import Store, require_pandas, to_frame
-from .task import SimulationTask, dumps_task
+from .task import SimulationTask, dumps_task, state_names
 
 __all__ = ["sweep", "Progress"]
 
@@ -73,7 +74,10 @@ def sweep(system, over: Mapping[str, Sequence[float] | str], *, t_end: float | N
         ``concurrent.futures.Executor``, or a ``distributed.Client`` (Dask cluster)
     workers : process count of the default pool; 0 runs everything in this process
     store : ``path.csv`` or ``path.parquet`` — each finished row is written as it completes
-    resume : with ``store``: skip the runs already stored (by run id) and compute only the rest
+    resume : with ``store``: skip the runs already stored and compute only the rest. A stored row is reused
+        only when its run id (the point) *and* its ``run_config`` (everything else that defines the run: the
+        system's equations, base values, t_end, options, backend, functions; :mod:`lagrange.sweep.identity`)
+        match; rows of another configuration are computed again (and replaced in the store)
     progress : show a progress bar (tqdm when installed, else a counter on stderr)
     options : further keyword arguments of :func:`lagrange.integrate.run.simulate` (method, rtol, atol, …)
 
@@ -81,14 +85,18 @@ def sweep(system, over: Mapping[str, Sequence[float] | str], *, t_end: float | N
     -------
     pandas.DataFrame
         Columns ``run_id`` (a stable hash of the point), the point's names, ``status`` (``ok``, ``error``: the
-        run raised, ``died``: its worker process died), ``error`` (the message), the results, ``wall_time``;
-        rows in the order of the points. A failing run never stops the others.
+        run raised, ``died``: its worker process died), ``error`` (the message), ``run_config`` (the key of
+        the configuration), the results, ``wall_time``; rows in the order of the points. A failing run never
+        stops the others. Swept names that are reserved columns are refused; a result column that would
+        overwrite one (or a swept value) makes that run an ``error`` (:mod:`lagrange.sweep.identity`).
+        Ctrl-C stops the sweep (KeyboardInterrupt) within about a second; the rows finished so far are in
+        the store, and ``resume=True`` continues.
 
     Raises
     ------
     SweepError
-        pandas missing (names the ``sweep`` extra), unknown names in ``over``, an unpicklable task, an
-        existing store without ``resume=True``.
+        pandas missing (names the ``sweep`` extra), unknown names in ``over``, a swept name that is a reserved
+        column, an unpicklable task, an existing store without ``resume=True``.
 
     Examples
     --------
@@ -115,21 +123,25 @@ def sweep(system, over: Mapping[str, Sequence[float] | str], *, t_end: float | N
         task = SimulationTask(system, t_end, initial or {}, params, options=options, summaries=summaries,
                               setup=setup, events=events, backend=backend, first_point=points[0], inputs=inputs)
         task.check_point(points[0])
+    reserved = reserved_columns(task, state_names(system) if isinstance(task, SimulationTask) else ())
+    check_point_names(names, reserved)
+    config = run_config(task)
     ids = [run_id(p) for p in points]
     if len(set(ids)) != len(ids):
         raise SweepError("the sweep has repeated points (equal values in `over`): every point must be distinct")
     box = Store(store, resume=resume) if store is not None else None
     if resume and box is None:
         raise SweepError("resume=True needs a store (store='path.csv' or 'path.parquet')")
-    done = box.finished() if box is not None else set()
+    done = box.finished(config) if box is not None else set()
     todo = [(rid, p) for rid, p in zip(ids, points) if rid not in done]
     payload = task if workers == 0 else dumps_task(task)
-    rows = {r["run_id"]: r for r in (box.rows() if box is not None else []) if r["run_id"] in set(ids)}
+    rows = {r["run_id"]: r for r in (box.rows() if box is not None else []) if r["run_id"] in done}
     bar = Progress(len(todo), progress)
     by_id = dict(zip(ids, points))
 
     def on_row(row: dict) -> None:
-        row = {"run_id": row["run_id"], **by_id[row["run_id"]], **{k: v for k, v in row.items() if k != "run_id"}}
+        row = {"run_id": row["run_id"], "run_config": config, **by_id[row["run_id"]],
+               **{k: v for k, v in row.items() if k != "run_id"}}
         rows[row["run_id"]] = row
         if box is not None:
             box.append(row)

@@ -228,7 +228,14 @@ def integrate_ensemble(model, t_span, Y0, P=None, *, method: str = "DOP853", rto
         raise IntegrationError("t_eval must be sorted in the direction of integration and lie within t_span")
     mem = _Members(model, Y0, P, t0)
     out = np.full((k, len(t_eval), Y0.shape[1]), np.nan)
-    _run(mem, scheme, t0, t1, direction, rtol, atol, max_step, t_eval, out)
+    try:
+        _run(mem, scheme, t0, t1, direction, rtol, atol, max_step, t_eval, out)
+    except SystemError as exc:  # Ctrl-C while numba boxed rhs_many's result: the interrupt it is
+        from ..integrate.stepper import interrupt_of
+
+        if interrupt_of(exc) is None:
+            raise
+        raise KeyboardInterrupt("integrate_ensemble was interrupted (Ctrl-C)") from None
     return EnsembleResult(t_eval, out, mem.nfev, mem.nsteps, mem.status, tuple(mem.messages), method)
 
 

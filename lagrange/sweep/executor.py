@@ -11,8 +11,20 @@ Worker death
     pool: every run in flight then fails with :class:`~concurrent.futures.process.BrokenProcessPool`,
     whichever killed it. Those runs are *suspects*: each is run again alone in a fresh one-process pool, so
     the one that kills its worker again is reported with ``status = "died"`` and the others complete;
-    the runs not yet started continue in a fresh pool. (Dask retries a task whose worker died on other
-    workers and finally raises ``KilledWorker``, reported as ``died`` too.)
+    the runs not yet started continue in a fresh pool. Dask retries a task whose worker died on other
+    workers and finally raises ``KilledWorker`` — for every task that happened to share the dying worker,
+    healthy ones included. So a ``KilledWorker`` run is a suspect too: it is run again alone in a local
+    one-process pool, and only a run that kills that process as well is reported ``died``.
+
+Released tasks
+    Each worker process unpickles a sweep's task once and keeps it (:func:`~lagrange.sweep.task.execute`);
+    it keeps at most :data:`~lagrange.sweep.task.KEEP_TASKS` of them, and at the end of a sweep on a Dask
+    client the task is released on every worker (``client.run``).
+
+Ctrl-C
+    A KeyboardInterrupt while waiting stops the sweep at once: runs not started are cancelled, the
+    processes of an own pool are terminated (their runs in flight are lost; those finished are stored),
+    and the KeyboardInterrupt propagates.
 """
 
 from __future__ import annotations
@@ -24,7 +36,7 @@ from collections.abc import Callable, Mapping
 from concurrent.futures import FIRST_COMPLETED, BrokenExecutor, Executor, ProcessPoolExecutor, wait
 from typing import Any
 
-from .task import execute
+from .task import execute, release_task
 
 __all__ = ["run_points", "as_executor"]
 
@@ -73,9 +85,11 @@ def _drive(ex: Executor, payload, token: str, pending: deque, window: int,
                 suspects.append(job)
                 broken = True
                 continue
-            except Exception as exc:  # noqa: BLE001 - infrastructure failures (KilledWorker, pickling) become rows
-                died = type(exc).__name__ == "KilledWorker"
-                row = _failed(rid, "died" if died else "error", f"{type(exc).__name__}: {exc}")
+            except Exception as exc:  # noqa: BLE001 - infrastructure failures (pickling) become rows
+                if type(exc).__name__ == "KilledWorker":  # maybe only a neighbour of the crash: isolate it
+                    suspects.append(job)
+                    continue
+                row = _failed(rid, "error", f"{type(exc).__name__}: {exc}")
             on_row(row)
     return suspects, broken
 
@@ -120,14 +134,41 @@ def run_points(payload, token: str, jobs: list[Job], *, executor=None, workers: 
     try:
         while True:
             suspects, broken = _drive(ex, payload, token, pending, 2 * n_workers, on_row)
-            if not broken:
+            if broken:
+                if own:
+                    ex.shutdown(wait=False, cancel_futures=True)
+                ex, own = ProcessPoolExecutor(max_workers=n_workers), True  # a fresh pool for the rest
+            if suspects:
+                _isolate(suspects, payload, token, n_workers, on_row)
+            if not broken or not pending:
                 return
-            if own:
-                ex.shutdown(wait=False, cancel_futures=True)
-            ex, own = ProcessPoolExecutor(max_workers=n_workers), True  # a fresh pool for the rest
-            _isolate(suspects, payload, token, n_workers, on_row)
-            if not pending:
-                return
+    except KeyboardInterrupt:
+        if own:
+            _stop(ex)
+            own = False
+        raise
     finally:
         if own:
             ex.shutdown(wait=True, cancel_futures=True)
+        _release(executor, token)
+
+
+def _stop(ex: Executor) -> None:
+    """Cancel what has not started and terminate the processes of a pool (Ctrl-C: do not wait for them)."""
+    processes = list((getattr(ex, "_processes", None) or {}).values())
+    ex.shutdown(wait=False, cancel_futures=True)
+    for proc in processes:
+        if proc.is_alive():
+            proc.terminate()
+    for proc in processes:
+        proc.join(timeout=5)
+
+
+def _release(executor: Any, token: str) -> None:
+    """Release the sweep's unpickled task on every worker of a Dask client (no-op for other executors)."""
+    client = getattr(executor, "_client", executor)  # a Client, or the executor of one
+    if type(client).__module__.split(".")[0] == "distributed" and hasattr(client, "run"):
+        try:
+            client.run(release_task, token)
+        except Exception:  # noqa: BLE001 - a cluster that is shutting down: nothing left to release
+            pass

@@ -14,8 +14,9 @@ Store formats (``sweep(..., store=path)``), chosen by the suffix:
     A directory of one Parquet file per run (``<run_id>.parquet``, written to a temporary name and
     renamed), read back as one table. Needs ``pyarrow``.
 
-``resume=True`` reads the store and skips every run id already there with status ``ok`` or ``error`` (an
-exception of the task is deterministic); ``died`` runs are computed again.
+``resume=True`` reads the store and skips every run already there with status ``ok`` or ``error`` (an
+exception of the task is deterministic) whose run id *and* ``run_config`` match the sweep being resumed
+(:mod:`lagrange.sweep.identity`); ``died`` runs and runs of another configuration are computed again.
 """
 
 from __future__ import annotations
@@ -102,16 +103,18 @@ class Store:
         if not text.strip():
             return []
         frame = pd.read_csv(io.StringIO(text), keep_default_na=False, na_values=[""],
-                            dtype={"run_id": str, "status": str, "error": str})
+                            dtype={"run_id": str, "run_config": str, "status": str, "error": str})
         return [_clean(r) for r in frame.to_dict("records")]
 
     def rows(self) -> list[dict]:
         """Every stored row (as read at opening, plus those appended since)."""
         return list(self._rows)
 
-    def finished(self) -> set[str]:
-        """Run ids with status ok or error: resume skips them."""
-        return {str(r["run_id"]) for r in self._rows if r.get("status") in FINISHED}
+    def finished(self, config: str | None = None) -> set[str]:
+        """Run ids with status ok or error (and, when ``config`` is given, that ``run_config``): resume skips
+        them. Rows stored without a ``run_config`` (older stores) never match a given one."""
+        return {str(r["run_id"]) for r in self._rows if r.get("status") in FINISHED
+                and (config is None or str(r.get("run_config", "")) == config)}
 
     # --- writing --------------------------------------------------------------------------------------
     def append(self, row: Mapping[str, Any]) -> None:
@@ -170,7 +173,7 @@ def _clean(record: Mapping[str, Any]) -> dict:
     out = {}
     for k, v in record.items():
         v = v.item() if hasattr(v, "item") else v
-        if k in ("run_id", "status", "error"):
+        if k in ("run_id", "run_config", "status", "error"):
             v = "" if v is None or (isinstance(v, float) and math.isnan(v)) else str(v)
         out[k] = v
     return out

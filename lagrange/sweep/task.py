@@ -14,9 +14,11 @@ functions; with ``cloudpickle`` installed, lambdas and notebook functions too).
 
 from __future__ import annotations
 
+import hashlib
 import math
 import pickle
 import time
+from collections import OrderedDict
 from collections.abc import Callable, Mapping, Sequence
 from typing import Any
 
@@ -27,7 +29,8 @@ from ..errors import SweepError
 from ..integrate.run import initial_state
 from ..model.coordinates import coordinate_name
 
-__all__ = ["SimulationTask", "InputExpressions", "execute", "dumps_task", "state_names", "scalar_columns"]
+__all__ = ["SimulationTask", "InputExpressions", "execute", "dumps_task", "state_names", "scalar_columns",
+           "release_task", "KEEP_TASKS"]
 
 Summary = Callable[[Any], Any]
 
@@ -122,6 +125,19 @@ class SimulationTask:
             inputs = f", an input ({', '.join(self.input_names)})" if self.input_names else ""
             raise SweepError(f"cannot sweep {', '.join(unknown)}: not a parameter ({', '.join(self.parameter_names)})"
                              f"{inputs} nor an initial value ({', '.join(state_names(self.system))}) of this system")
+
+    def fingerprint(self) -> str:
+        """Text of everything but the point that defines a run (:mod:`lagrange.sweep.identity`): the derived
+        equations, the base values, t_end, the options, the backend and the functions."""
+        from ..codegen.derivation_cache import declaration_key
+        from .identity import describe
+
+        # the declaration (T, V, P, constraints, …, and the lagrange/sympy versions), else the generated code
+        eqs = declaration_key(self.system) or hashlib.sha256(self.model.source.encode()).hexdigest()
+        parts = {"equations": eqs, "t_end": self.t_end, "initial": self.initial, "params": self.params,
+                 "inputs": self.inputs, "options": self.options, "backend": self.model.backend,
+                 "summaries": list(self.summaries), "setup": self.setup, "events": self.events}
+        return describe(parts)
 
     def __getstate__(self):
         state = dict(self.__dict__)
@@ -235,20 +251,37 @@ def dumps_task(task) -> bytes:
                          "cloudpickle), or run in this process with workers=0") from None
 
 
-_TASKS: dict[str, Any] = {}  # per process: the unpickled task of each sweep (unpickled once, not per run)
+#: per process: the unpickled task of each recent sweep (unpickled once, not per run), least recently used first
+_TASKS: OrderedDict[str, Any] = OrderedDict()
+#: how many unpickled tasks a worker process keeps (older ones are released: long-lived Dask workers would
+#: otherwise accumulate one per sweep)
+KEEP_TASKS = 2
+
+
+def release_task(token: str) -> bool:
+    """Forget the unpickled task of sweep ``token`` in this process (run on every Dask worker when a sweep
+    ends); whether it was held."""
+    return _TASKS.pop(token, None) is not None
 
 
 def execute(payload: bytes | Any, token: str, rid: str, point: Mapping) -> dict[str, Any]:
     """Run one point in a worker: the row ``{run_id, status, error, wall_time, …results}``.
 
     ``payload`` is a task pickled by :func:`dumps_task` (unpickled once per process and kept under
-    ``token``) or the task itself (in-process runs). An exception of the task gives ``status = "error"``
-    and ``error = "Type: message"``; the other runs are unaffected.
+    ``token``, at most :data:`KEEP_TASKS` of them) or the task itself (in-process runs). An exception of the
+    task gives ``status = "error"`` and ``error = "Type: message"``; so does a result column that would
+    overwrite a reserved column or a swept value (:mod:`lagrange.sweep.identity`); the other runs are
+    unaffected. Ctrl-C (KeyboardInterrupt) is not caught: it stops the sweep.
     """
+    from .identity import clashing_columns
+
     if isinstance(payload, bytes):
         task = _TASKS.get(token)
         if task is None:
             task = _TASKS[token] = pickle.loads(payload)  # noqa: S301 - our own payload
+            while len(_TASKS) > KEEP_TASKS:
+                _TASKS.popitem(last=False)
+        _TASKS.move_to_end(token)
     else:
         task = payload
     t0 = time.perf_counter()
@@ -257,4 +290,10 @@ def execute(payload: bytes | Any, token: str, rid: str, point: Mapping) -> dict[
         status, error = "ok", ""
     except Exception as exc:  # noqa: BLE001 - one failing run must not stop the sweep: it is reported
         values, status, error = {}, "error", f"{type(exc).__name__}: {exc}".strip()
+    clash = clashing_columns(values, point)
+    if clash:
+        values, status = {}, "error"
+        error = (f"SweepError: the task returned column(s) {', '.join(map(repr, clash))}, which would overwrite "
+                 "a reserved column (run_id, run_config, status, error, wall_time) or a swept value: rename the "
+                 "summary")
     return {"run_id": rid, "status": status, "error": error, **values, "wall_time": time.perf_counter() - t0}

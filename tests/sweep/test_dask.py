@@ -23,7 +23,7 @@ def client():
 
 
 def _results(table):
-    return table.drop(columns=["wall_time"])
+    return table.drop(columns=["wall_time", "run_config"])
 
 
 def test_dask_client_and_executor_match_the_local_pool(client):

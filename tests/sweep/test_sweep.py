@@ -24,7 +24,8 @@ OVER = {"k": [1.0, 2.0, 4.0, 9.0], "x": [0.5, 1.0]}
 
 
 def _results(table):
-    return table.drop(columns=["wall_time"]).reset_index(drop=True)
+    """The results (run_config differs between sweeps with other summaries: compared where it matters)."""
+    return table.drop(columns=["wall_time", "run_config"]).reset_index(drop=True)
 
 
 def peak(traj):
@@ -112,7 +113,7 @@ def test_resume_computes_only_the_missing_runs(tmp_path, monkeypatch, serial, su
         lg.sweep(OSC, OVER, workers=0, summaries=[peak, mark_call], store=store, **BASE)
     resumed = lg.sweep(OSC, OVER, workers=2, summaries=[peak, mark_call], store=store, resume=True, **BASE)
     assert len(list(marks.iterdir())) == 8 + 4  # only the four missing runs were computed
-    cols = [c for c in serial.columns if c != "wall_time"]
+    cols = [c for c in serial.columns if c not in ("wall_time", "run_config")]  # other summaries: other config
     pd.testing.assert_frame_equal(resumed[cols], serial[cols], check_dtype=False)
     again = lg.sweep(OSC, OVER, workers=0, summaries=[peak, mark_call], store=store, resume=True, **BASE)
     assert len(list(marks.iterdir())) == 12 and len(again) == 8
