@@ -79,6 +79,7 @@ BAD_API = [
      "events"),
     ({"stabilization": "drift"}, "stabilization"),
     ({"method": "gl4"}, "step"),
+    ({"method": "gl4", "step": 0.01, "t_eval": [0.0, 1.0]}, "t_eval"),
     ({"method": "gl4", "step": 1e-300}, "step"),
     ({"method": "gl4", "step": -0.1}, "step"),
     ({"method": "gl4", "step": math.inf}, "step"),

@@ -51,8 +51,6 @@ def run(req) -> Trajectory:
     refused events, constraints, inputs and non-conservative systems, and required ``step``)."""
     from .prepare import model_for
 
-    if req.t_eval is not None:
-        raise TypeError(f"{req.method} is a fixed-step integrator: it takes step= and n_points=, not t_eval")
     compiled = fixed_loop(req.loop, backend=req.backend, model=req.model)
     model = model_for(req.equations, req.params, req.model, "python")
     return integrate_fixed(req.system, req.t_span, req.y0, req.params, method=req.method, step=req.step.h,

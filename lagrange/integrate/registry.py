@@ -54,6 +54,8 @@ class Method:
         ``"C"`` (a loop in C)
     conservative_only : needs a conservative system (forces derivable from V only; no P, Q or inputs)
     dense_output : its output at ``t_eval`` comes from an interpolant (else the output is the steps recorded)
+    precheck : ``"module:function"`` of ``precheck(equations)``, run before the generic check to refuse with the
+        method's own, more specific error (the Taylor tape names the constraint or operation it cannot expand)
     """
 
     name: str
@@ -74,6 +76,7 @@ class Method:
     loops: tuple[str, ...] = ("python",)
     conservative_only: bool = False
     dense_output: bool = True
+    precheck: str = ""
 
     @property
     def step_required(self) -> bool:
@@ -84,6 +87,12 @@ class Method:
         """The function ``run(request) -> Trajectory`` (imported now)."""
         module, _, function = self.run.partition(":")
         return getattr(importlib.import_module(module), function)
+
+    def check_equations(self, equations) -> None:
+        """Run the method's own ``precheck`` on ``equations`` (nothing when it has none)."""
+        if self.precheck:
+            module, _, function = self.precheck.partition(":")
+            getattr(importlib.import_module(module), function)(equations)
 
 
 _SCIPY = "lagrange.integrate.scipy_ivp:run"
@@ -106,7 +115,7 @@ METHODS: tuple[Method, ...] = (
     Method("taylor", "Taylor series", "adaptive", "lagrange.integrate.taylor_run:run",
            "adaptive Taylor series of order ceil(-ln(rtol)/2 + 1), analytic unconstrained systems",
            events=False, holonomic=False, nonholonomic=False, projection=False, friction_switches=False,
-           rough=False, varying_inputs=False, loops=("C", "numba")),
+           rough=False, varying_inputs=False, loops=("C", "numba"), precheck="lagrange.integrate.taylor_run:precheck"),
     Method("midpoint", order="2", summary="implicit midpoint rule, symplectic", aliases=("implicit_midpoint",),
            **_GEOMETRIC),
     Method("gl4", order="4", summary="Gauss-Legendre collocation (2 stages), symplectic", **_GEOMETRIC),
@@ -154,6 +163,7 @@ FEATURES = {
     "rough": "rough constraints",
     "inputs": "inputs",
     "varying_inputs": "time-varying inputs",
+    "dense_output": "output at given times t_eval (a fixed-step method records every stride-th step: use n_points)",
 }
 
 
@@ -183,8 +193,11 @@ def check_supported(entry: Method, needs: dict[str, str], *, conservative: bool 
         return
     ok = [m for m in supporting(*missing) if not (find(m).conservative_only and not conservative)]
     kind = InputError if missing and set(missing) <= {"inputs", "varying_inputs"} else MethodError
-    raise kind(f"method {entry.name!r} ({entry.family}) does not support {' and '.join(problems)}; methods "
-                      f"that do: {', '.join(ok) if ok else 'none'}{' or auto' if ok else ''}")
+    why = (" (time-varying inputs run on the scipy methods, which call Python per step; the compiled loops, the "
+           "Taylor tape and the geometric methods take constant inputs at most)" if "varying_inputs" in missing
+           else "")
+    raise kind(f"method={entry.name!r} (a {entry.family} integrator) does not support {' and '.join(problems)}"
+               f"{why}; methods that do: {', '.join(ok) if ok else 'none'}{' or auto' if ok else ''}")
 
 
 def table() -> str:

@@ -218,7 +218,9 @@ def simulate(
         name, why = _auto(eqs, params, (t0, t1), y0, rtol, backend if model is None else model.backend,
                           bool(events), schedule is not None)
         entry = registry.get(name)
-    registry.check_supported(entry, _needs(eqs, events, switches, schedule),
+    entry.check_equations(eqs)
+    needs = _needs(eqs, events, switches, schedule) | ({"dense_output": ""} if t_eval is not None else {})
+    registry.check_supported(entry, needs,
                              conservative=all(Q == 0 for Q in eqs.nonconservative))
     if switches and eqs.m:
         raise MethodError("dry-friction sign() switches with constraints: use friction='regularize'")

@@ -11,7 +11,15 @@ from ..results.trajectory import Trajectory
 from .prepare import check_initial_mass_matrix, model_for, refuse_route
 from .request import RunRequest
 
-__all__ = ["run", "taylor_ready"]
+__all__ = ["run", "taylor_ready", "precheck"]
+
+
+def precheck(eqs) -> None:
+    """Refuse constrained equations with the tape's own error, which names the constraint (a TapeError)."""
+    if eqs.m:
+        from .taylor import tape_of
+
+        tape_of(eqs)
 
 
 def taylor_ready(eqs) -> bool:
