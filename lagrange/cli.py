@@ -23,7 +23,7 @@ from contextlib import contextmanager
 
 from . import __version__
 from .errors import IntegrationInterrupted, LagrangeError, SpecError
-from .integrate.methods import ADAPTIVE, FIXED_STEP, SCIPY
+from .integrate.methods import ADAPTIVE, FIXED_STEP
 from .spec.options import check_names, merge_run_options, parse_assignments
 
 __all__ = ["main"]
@@ -208,7 +208,18 @@ def _refuse(args, names: dict[str, str], why: str) -> None:
             raise SpecError(f"{flag} does not apply to {why}" + (f" ({hint})" if hint else ""))
 
 
+def _cmd_methods(args) -> int:
+    from .integrate.registry import table
+
+    print(table())
+    return 0
+
+
 def _cmd_simulate(args) -> int:
+    if args.list_methods:
+        return _cmd_methods(args)
+    if args.spec is None:
+        raise SpecError("simulate needs a spec (a problem id, a Python file or a TOML spec), or --list-methods")
     if args.model is not None and not args.spec.lower().startswith("greenspan-"):
         raise SpecError("--model applies to greenspan-N only")
     if args.model == "molecular":
@@ -719,9 +730,12 @@ def _count(minimum: int):
 
 
 def _method_help() -> str:
-    return (f"integration method (case-insensitive; default: the spec's, else DOP853): adaptive "
-            f"{', '.join(SCIPY)} (scipy), taylor (Taylor series), auto (chosen from the equations); fixed-step "
-            f"{', '.join(FIXED_STEP)} (geometric, need --step)")
+    from .integrate.registry import names
+
+    return (f"integration method from the registry (case-insensitive; default: the spec's, else DOP853): adaptive "
+            f"{', '.join(names(adaptive=True))}, or auto (chosen from the equations); fixed-step "
+            f"{', '.join(names(adaptive=False))} (geometric, need --step). `lagrange methods` prints what each "
+            "supports")
 
 
 def _run_arguments(p: argparse.ArgumentParser) -> None:
@@ -767,7 +781,9 @@ def _parser() -> argparse.ArgumentParser:
     p = sub.add_parser("simulate", parents=[quiet], help="integrate the equations of motion",
                        description="Integrate the equations of motion. The spec's [simulate] values (method, "
                        "rtol, …) are the defaults; the flags given override them.")
-    p.add_argument("spec", help=spec_help + "; or greenspan-N (Greenspan's top, example N = 1 … 14)")
+    p.add_argument("spec", nargs="?", help=spec_help + "; or greenspan-N (Greenspan's top, example N = 1 … 14)")
+    p.add_argument("--list-methods", action="store_true", help="print the method registry (as `lagrange methods`) "
+                   "and exit")
     p.add_argument("--plot", help="write a PNG plot to this path")
     p.add_argument("--csv", help="write the trajectory to this CSV path")
     p.add_argument("--animate", help="write an animation (.gif, or .mp4 with ffmpeg) to this path")
@@ -776,6 +792,9 @@ def _parser() -> argparse.ArgumentParser:
     p.add_argument("--model", choices=["rigid", "molecular"], help="greenspan-N only: the model to run (molecular: "
                    "takes --t-end, --step, --param A=…/g=…, --plot, --csv)")
     p.set_defaults(func=_cmd_simulate)
+
+    p = sub.add_parser("methods", help="the integration methods: family, order, what each supports")
+    p.set_defaults(func=_cmd_methods)
 
     p = sub.add_parser("modes", help="linearize about an equilibrium: matrices, frequencies, mode shapes")
     p.add_argument("spec", help=spec_help)

@@ -131,6 +131,8 @@ __all__ = [
     "SymbolicTimeoutError",
     "LagrangeWarning",
     "UnusedParameterWarning",
+    "MethodError",
+    "OptionError",
 ]
 
 
@@ -172,3 +174,13 @@ class IntegrationInterrupted(KeyboardInterrupt):
 
 
 __all__ += ["IntegrationInterrupted"]
+class MethodError(LagrangeError, TypeError):
+    """An integration method (or loop, friction or stabilization treatment) that does not exist, or that does
+    not support what the run asks for (events, constraints, friction switches, inputs, ...): the message names
+    the method, the unsupported combination and the methods that do support it
+    (:mod:`lagrange.integrate.registry`)."""
+
+
+class OptionError(LagrangeError, ValueError):
+    """A value of a simulate option (or of a spec's ``[simulate]`` table) is out of range: the message names
+    the option, the value and the limit (:mod:`lagrange.integrate.options`)."""

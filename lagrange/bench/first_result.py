@@ -154,8 +154,8 @@ def _warm_sympy() -> None:
 
 
 def _child(problem_name: str, route: str, tol: float, quick: bool) -> dict:
+    from .common import initial_vector
     from .problems import get_problem
-    from .runner import initial_vector
 
     _warm_sympy()  # an import cost, not timed for any route
     p = get_problem(problem_name, quick=quick)

@@ -13,8 +13,8 @@ import time
 import numpy as np
 
 from ..errors import LagrangeError
+from .common import EnergyRun, _numba_ok, initial_vector
 from .problems import BenchProblem
-from .runner import EnergyRun, _numba_ok, initial_vector
 
 __all__ = ["energy_runs"]
 

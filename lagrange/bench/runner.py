@@ -31,6 +31,8 @@ import numpy as np
 from scipy.integrate import solve_ivp
 
 from ..errors import LagrangeError
+from ..integrate.options import FrictionOptions
+from .common import EnergyRun, _numba_ok, initial_vector  # noqa: F401 (their home until they moved)
 from .problems import BenchProblem
 
 __all__ = ["TOLERANCES", "QUICK_TOLERANCES", "MethodSpec", "Point", "Curve", "Reference", "EnergyRun",
@@ -84,16 +86,6 @@ class Reference:
     check: float | None = None  # closed form: distance of a DOP853 rtol 1e-13 run from it
 
 
-@dataclass(frozen=True)
-class EnergyRun:
-    """Relative energy error ``|E(t) − E(0)| / |E(0)|`` along a long run."""
-
-    label: str
-    t: np.ndarray
-    error: np.ndarray
-    wall: float
-
-
 @dataclass
 class ProblemResult:
     problem: BenchProblem
@@ -102,18 +94,6 @@ class ProblemResult:
     derive_s: float
     energy: list = field(default_factory=list)
     first_result: list = field(default_factory=list)
-
-
-def initial_vector(problem: BenchProblem, system) -> np.ndarray:
-    """``y0 = [q, q̇]`` of ``problem`` in the order of the system's coordinates."""
-    names = [c.func.__name__ for c in system.derived.coordinates]
-    return np.array([problem.initial[n] for n in names] + [problem.initial[n + "_dot"] for n in names], dtype=float)
-
-
-def _numba_ok() -> bool:
-    import importlib.util
-
-    return importlib.util.find_spec("numba") is not None
 
 
 def method_specs(problem: BenchProblem, *, quick: bool = False, heyoka: bool = True) -> list[MethodSpec]:
@@ -144,7 +124,7 @@ def method_specs(problem: BenchProblem, *, quick: bool = False, heyoka: bool = T
     if friction:
         for eps in (1e-3, 1e-5):
             specs.append(MethodSpec(f"LSODA python regularized ε={eps:g}", method="LSODA",
-                                    options=(("friction", "regularize"), ("friction_epsilon", eps))))
+                                    options=(("friction", FrictionOptions("regularize", eps)),)))
     if problem.conservative and problem.geometric:
         fixed = ["gl4"] if quick else ["midpoint", "gl4", "gl6", "dg"] + (["verlet"] if problem.separable else [])
         specs += [MethodSpec(f"{m} (fixed step)", kind="fixed", method=m, loop="scipy") for m in fixed]

@@ -339,6 +339,14 @@ class NumericModel:
         return out
 
     # --- what the Taylor method and the heyoka backend consume, produced by codegen on request ---------------
+    @staticmethod
+    def tape_for(eqs: Equations):
+        """The Taylor tape of ``eqs`` before any model is built (:func:`lagrange.codegen.tape.tape_of`; raises
+        :class:`~lagrange.codegen.tape.TapeError` naming a constraint or a non-analytic function)."""
+        from .tape import tape_of
+
+        return tape_of(eqs)
+
     def taylor_tape(self):
         """The Taylor tape of the equations (:func:`lagrange.codegen.tape.tape_of`; built once per Equations).
         Raises :class:`~lagrange.codegen.tape.TapeError` for constraints or a non-analytic function."""
@@ -367,6 +375,116 @@ class NumericModel:
         from .heyoka_expr import heyoka_odes
 
         return heyoka_odes(self.equations)
+
+    # -- what integration needs besides rhs: generated here on request (lagrange.integrate imports this type
+    #    and nothing else from codegen; see lagrange/integrate/__init__.py) --
+
+    @staticmethod
+    def build(eqs: Equations, params: Mapping, *, backend: str = "python", baumgarte: tuple | None = None,
+              inputs: Mapping | None = None) -> NumericModel:
+        """:func:`compile_equations` of ``eqs``; ``baumgarte=(α, β)`` compiles ``A q̈ = c − 2α g − β² φ``
+        (:func:`~lagrange.codegen.run_functions.baumgarte_rhs`) instead of ``A q̈ = c``."""
+        crhs = None
+        if baumgarte is not None and eqs.m:
+            from .run_functions import baumgarte_rhs
+
+            crhs = baumgarte_rhs(eqs, *baumgarte)
+        return compile_equations(eqs, params, backend=backend, constraint_rhs=crhs, inputs=inputs)
+
+    @staticmethod
+    def resolve_inputs(eqs: Equations, inputs, t_span, y0) -> tuple[dict, object]:
+        """``(constants, schedule)`` of the input values ``inputs``
+        (:func:`~lagrange.codegen.input_values.resolve_inputs`)."""
+        from .input_values import resolve_inputs
+
+        return resolve_inputs(eqs, inputs, t_span, y0)
+
+    @staticmethod
+    def varying_routes() -> str:
+        """Which routes run time-varying inputs (:data:`~lagrange.codegen.input_values.VARYING_ROUTES`)."""
+        from .input_values import VARYING_ROUTES
+
+        return VARYING_ROUTES
+
+    @staticmethod
+    def switches_of(eqs: Equations) -> list:
+        """The dry-friction switches of ``eqs`` (:func:`~lagrange.codegen.switches.switching_functions`)."""
+        from .switches import switching_functions
+
+        return switching_functions(eqs)
+
+    @staticmethod
+    def regularized(eqs: Equations, epsilon: float) -> Equations:
+        """``eqs`` with ``sign(u) → u/sqrt(u² + ε²)`` (:func:`~lagrange.codegen.switches.regularized_equations`)."""
+        from .switches import regularized_equations
+
+        return regularized_equations(eqs, epsilon)
+
+    @staticmethod
+    def planar_friction(eqs: Equations, treatment, epsilon) -> Equations:
+        """``eqs`` with friction over a rough surface formed from its sliding components (exact |v|, floored,
+        or regularized sqrt(|v|² + ε²)) (:func:`~lagrange.codegen.rough_friction.planar_friction_for`)."""
+        from .rough_friction import planar_friction_for
+
+        return planar_friction_for(eqs, treatment, epsilon)
+
+    @staticmethod
+    def cache_location() -> str:
+        """Where lagrange's cache is (:func:`~lagrange.codegen.cache.cache_root`, not created): the key under
+        which a process keeps the kernels it loaded from it."""
+        from .cache import cache_root
+
+        return str(cache_root())
+
+    @staticmethod
+    def load_kernel(text: str, prefix: str, what: str):
+        """A self-contained numba module from its source ``text``, imported from lagrange's cache directory
+        (:func:`~lagrange.codegen.numba_backend.load_cached`); BackendError naming ``what`` without numba."""
+        from .numba_backend import _require_numba, load_cached
+
+        _require_numba(what)
+        return load_cached(prefix, text, f"the kernel for {what}")
+
+    @cached_property
+    def lam_required(self) -> bool:
+        """Whether the power balance needs the multipliers λ (moving constraints do work)."""
+        return lam_required(self.equations)
+
+    @cached_property
+    def jacobian(self) -> Callable:
+        """``jac(t, y) -> (2n, 2n)`` (:func:`~lagrange.codegen.run_functions.jacobian_function`), built once."""
+        from .run_functions import jacobian_function
+
+        return jacobian_function(self)
+
+    @cached_property
+    def power(self) -> Callable:
+        """``power(t, y_list, lam_list)`` = dh/dt (:func:`~lagrange.codegen.run_functions.power_function`)."""
+        from .run_functions import power_function
+
+        return power_function(self)
+
+    @cached_property
+    def sliding(self) -> Callable:
+        """``v(t, y, p)``: rough constraints' sliding velocities
+        (:func:`~lagrange.codegen.run_functions.sliding_functions`)."""
+        from .run_functions import sliding_functions
+
+        return sliding_functions(self)
+
+    def switched(self, switches: list):
+        """The frozen-switch pieces for the friction driver
+        (:func:`~lagrange.codegen.run_functions.switched_pieces`)."""
+        from .run_functions import switched_pieces
+
+        return switched_pieces(self, switches)
+
+    def hamiltonian(self):
+        """The :class:`~lagrange.codegen.hamiltonian_model.HamiltonianModel` of these equations and parameter
+        values (conservative unconstrained systems; memoized per equations and values)."""
+        from .hamiltonian_model import hamiltonian_model
+
+        return hamiltonian_model(self.equations, np.asarray(self.params, dtype=float))
 
 
 def _reference_functions(eqs: Equations):
@@ -547,7 +665,7 @@ def compile_equations(eqs: Equations, params: Mapping, *, backend: str = "python
     """Generate numeric code for ``eqs`` and bind ``params``.
 
     ``constraint_rhs`` replaces ``c`` in ``A q̈ = c`` (Baumgarte stabilization,
-    :func:`lagrange.integrate.constrained.baumgarte_rhs`). ``inputs``: a constant for each of ``eqs.inputs``
+    :func:`lagrange.codegen.run_functions.baumgarte_rhs`). ``inputs``: a constant for each of ``eqs.inputs``
     (keys: symbols or names), bound as the last entries of ``p``; time-varying values go to
     :func:`lagrange.integrate.run.simulate` (or :meth:`NumericModel.with_schedule`).
 

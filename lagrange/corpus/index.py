@@ -122,7 +122,7 @@ def stale_modules(folder: Path | None = None) -> list[str]:
 def build_index(folder: Path | None = None) -> dict:
     """Import every corpus module and build the index (what ``--write`` stores)."""
     from ..discrete.greenspan import EXAMPLES
-    from .registry import _module_problems, _sort_key
+    from .modules import _module_problems, _sort_key
 
     folder = folder or _package_dir()
     files = _module_files(folder)

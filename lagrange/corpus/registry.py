@@ -8,20 +8,14 @@ from __future__ import annotations
 
 import importlib
 import pkgutil
-import re
 from functools import lru_cache
 
 from ..errors import SpecError
+from .modules import PACKAGE, _module_problems, _sort_key
 from .problem import Problem
 
 __all__ = ["all_problems", "get_problem", "problem_ids", "PACKAGE"]
 
-PACKAGE = "lagrange_problems"
-
-
-def _sort_key(p: Problem):
-    nums = [int(x) for x in re.findall(r"\d+", p.id)]
-    return (p.chapter, nums, p.id)
 
 
 def _module_names() -> list[str]:
@@ -30,18 +24,6 @@ def _module_names() -> list[str]:
     except ImportError as exc:  # pragma: no cover - broken installation
         raise SpecError(f"the problem corpus ({PACKAGE}) is not installed: reinstall lagrange") from exc
     return [info.name for info in pkgutil.iter_modules(pkg.__path__) if not info.name.startswith("_")]
-
-
-def _module_problems(name: str) -> list[Problem]:
-    try:
-        mod = importlib.import_module(f"{PACKAGE}.{name}")
-    except Exception as exc:  # noqa: BLE001 - a broken corpus module is reported by name, in one line
-        raise SpecError(f"corpus module {name} failed to load: {type(exc).__name__}: {exc}") from None
-    probs = getattr(mod, "PROBLEMS", None) or [getattr(mod, "PROBLEM", None)]
-    for p in probs:
-        if not isinstance(p, Problem):
-            raise SpecError(f"corpus module {name} defines no PROBLEM")
-    return list(probs)
 
 
 @lru_cache(maxsize=1)

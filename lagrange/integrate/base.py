@@ -24,8 +24,8 @@ from typing import ClassVar
 
 import numpy as np
 
+from ..codegen.hamiltonian_model import HamiltonianModel
 from ..errors import IntegrationError, LagrangeError
-from .hamiltonian_model import HamiltonianModel
 
 __all__ = ["Integrator", "newton", "NewtonFailure", "not_converged", "diverged", "singular_jacobian", "step_prefix",
            "non_finite_state"]

@@ -44,7 +44,7 @@ from types import ModuleType
 import numpy as np
 
 from ..codegen.numeric import NumericModel
-from ..errors import BackendError, IntegrationError, IntegrationInterrupted
+from ..errors import BackendError, IntegrationError, IntegrationInterrupted, MethodError
 from ..model.coordinates import state_text
 from ..results.trajectory import Trajectory
 
@@ -132,7 +132,7 @@ def loop_backend(loop: str, *, backend: str, model: NumericModel | None) -> str:
     resolved), after checking ``loop``: :class:`TypeError` for an unknown one, :class:`BackendError` for
     ``"compiled"`` without numba. Shared by the adaptive and the fixed-step loops."""
     if loop not in LOOPS:
-        raise TypeError(f"loop must be one of {', '.join(map(repr, LOOPS))}, got {loop!r}")
+        raise MethodError(f"loop must be one of {', '.join(map(repr, LOOPS))}, got {loop!r}")
     if loop == "compiled" and not _numba_available():
         raise BackendError("loop='compiled' needs numba: install it with `pip install \"lagrange-dynamics[fast]\"`")
     if model is not None:
@@ -179,15 +179,10 @@ def kernel(filename: str, prefix: str, what: str) -> ModuleType:
     site-packages, and the kernel is compiled once per machine and version. A corrupted numba cache is
     purged and rebuilt once; ``what`` names the feature in errors.
     """
-    from ..codegen.cache import cache_root
-
-    key = (str(cache_root()), filename)
+    key = (NumericModel.cache_location(), filename)
     if key not in _LOADED:
-        from ..codegen.numba_backend import _require_numba, load_cached
-
-        _require_numba(what)
-        _LOADED[key] = load_cached(prefix, Path(__file__).with_name(filename).read_text(encoding="utf-8"),
-                                   f"the kernel for {what}")
+        _LOADED[key] = NumericModel.load_kernel(Path(__file__).with_name(filename).read_text(encoding="utf-8"),
+                                                prefix, what)
     return _LOADED[key]
 
 

@@ -11,9 +11,9 @@ numerically the positions and velocities drift off ``φ = 0`` and ``A q̇ + b = 
     and Radau (one-step methods); with BDF/LSODA Baumgarte is used instead.
 
 ``"baumgarte"``
-    ``A q̈ = c − 2α g − β² φ`` (Baumgarte 1972) with ``baumgarte=(α, β)`` in 1/time units (default
-    (10, 10)): the violation decays instead of growing, but never reaches round-off and α, β must suit
-    the time scale.
+    ``A q̈ = c − 2α g − β² φ`` (Baumgarte 1972) with ``Stabilization("baumgarte", alpha=α, beta=β)``
+    in 1/time units (default (10, 10)): the violation decays instead of growing, but never reaches round-off
+    and α, β must suit the time scale.
 
 ``"none"``
     The plain index-1 system: the violation grows (roughly linearly in the velocity constraint and
@@ -26,28 +26,23 @@ raises :class:`~lagrange.errors.InitialConditionError` naming the violated const
 
 from __future__ import annotations
 
+import importlib
+import warnings
+
 import numpy as np
-import sympy as sp
 
-from ..derive.equations import Equations
 from ..errors import InitialConditionError
+from .options import STABILIZATIONS
 
-__all__ = ["baumgarte_rhs", "Projector", "consistent_initial", "STABILIZATIONS"]
-
-STABILIZATIONS = ("projection", "baumgarte", "none")
+__all__ = ["Projector", "consistent_initial", "STABILIZATIONS"]
 
 
-def baumgarte_rhs(eqs: Equations, alpha: float, beta: float) -> list:
-    """``c_k − 2α g_k − β² φ_k`` (φ term only for holonomic constraints), in plain symbols."""
-    qd = sp.Matrix(eqs.qd)
-    out = []
-    for k in range(eqs.m):
-        g = (eqs.constraint_matrix[k, :] * qd)[0, 0] + eqs.constraint_bias[k]
-        e = eqs.constraint_rhs[k] - 2 * sp.Float(alpha) * g
-        if eqs.constraint_positions[k] is not None:
-            e -= sp.Float(beta) ** 2 * eqs.constraint_positions[k]
-        out.append(e)
-    return out
+def __getattr__(name: str):
+    if name == "baumgarte_rhs":  # symbolic: code generation's (lagrange/integrate/__init__.py)
+        warnings.warn("lagrange.integrate.constrained.baumgarte_rhs moved to lagrange.codegen.run_functions",
+                      DeprecationWarning, stacklevel=2)
+        return importlib.import_module("lagrange.codegen.run_functions").baumgarte_rhs
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
 class Projector:

@@ -1,22 +1,22 @@
 """The names of the integration methods of :func:`~lagrange.integrate.run.simulate`, without importing them.
 
-A light module (no numpy, scipy or sympy) so the command line can list and check methods before loading
-anything: ``tests/test_methods_table.py`` checks these tuples against
-:data:`~lagrange.integrate.scipy_ivp.SCIPY_METHODS` and :data:`~lagrange.integrate.fixed.GEOMETRIC`.
+A light view of the method registry (:mod:`lagrange.integrate.registry`, which imports no numpy, scipy or
+sympy), so the command line can list and check methods before loading anything.
 """
 
 from __future__ import annotations
 
+from .registry import METHODS, find
+
 __all__ = ["SCIPY", "ADAPTIVE", "FIXED_STEP", "ALL_METHODS", "canonical_method"]
 
 #: scipy's solve_ivp methods (the implicit ones get the generated Jacobian)
-SCIPY = ("DOP853", "RK45", "RK23", "LSODA", "Radau", "BDF")
+SCIPY = tuple(m.name for m in METHODS if m.family.startswith("scipy"))
 #: methods that choose their own steps from rtol/atol (``auto`` picks one of them)
-ADAPTIVE = (*SCIPY, "taylor", "auto")
+ADAPTIVE = (*(m.name for m in METHODS if m.adaptive), "auto")
 #: fixed-step geometric methods: they take ``step=h`` and no tolerances
-FIXED_STEP = ("midpoint", "gl4", "gl6", "verlet", "dg")
+FIXED_STEP = tuple(m.name for m in METHODS if m.step_required)
 ALL_METHODS = (*ADAPTIVE, *FIXED_STEP)
-_BY_LOWER = {m.lower(): m for m in ALL_METHODS}
 
 
 def canonical_method(name: str) -> str | None:
@@ -26,6 +26,7 @@ def canonical_method(name: str) -> str | None:
     >>> canonical_method("dop853"), canonical_method("GL4"), canonical_method("rk4")
     ('DOP853', 'gl4', None)
     """
-    if not isinstance(name, str):
-        return None
-    return _BY_LOWER.get(name.strip().lower())
+    if isinstance(name, str) and name.strip().lower() == "auto":
+        return "auto"
+    entry = find(name)
+    return None if entry is None else entry.name

@@ -1,56 +1,244 @@
-"""scipy's ``solve_ivp`` methods, with a generated Jacobian for the implicit ones.
+"""scipy's ``solve_ivp`` methods (DOP853, RK45, RK23, LSODA, Radau, BDF) and the compiled DOP853/RK45 loops.
 
-The Jacobian of ``y' = [q̇, M⁻¹f]`` is
-
-.. math:: \\frac{\\partial \\ddot q}{\\partial y_k} = M^{-1}\\Big(\\frac{\\partial f}{\\partial y_k}
-          - \\frac{\\partial M}{\\partial y_k}\\,\\ddot q\\Big)
-
-built from symbolic derivatives of M and f (one CSE'd lambdify), never from finite differences.
+:func:`run` is the run function of their registry entries (:mod:`lagrange.integrate.registry`): it picks the
+loop (scipy's, or the compiled numba loop of :mod:`lagrange.integrate.compiled`), the constraint treatment
+(projection after each step, or Baumgarte), the friction driver (:mod:`lagrange.integrate.switching`) or the
+rough-constraint driver (:mod:`lagrange.integrate.rough`), and builds the Trajectory. The implicit methods get
+the generated Jacobian of the model (:attr:`~lagrange.codegen.numeric.NumericModel.jacobian`), never finite
+differences (except for feedback inputs, whose ∂u/∂y is not generated).
 """
 
 from __future__ import annotations
 
-from collections.abc import Callable
+import math
+import warnings
 
 import numpy as np
-import sympy as sp
+from scipy.integrate import solve_ivp
 
-from ..codegen.cse import numeric_arguments, rename_map
 from ..codegen.numeric import NumericModel
+from ..errors import IntegrationError, LagrangeError, SingularMassMatrixError
+from ..results.trajectory import Trajectory
+from .constrained import Projector, consistent_initial
+from .faults import FAULT_CAUSES, collapse_error, model_fault, state_text_of, with_partial
+from .prepare import check_initial_mass_matrix, model_for, refuse_route
+from .request import RunRequest
+from .stepper import STEPPABLE, StepLog, interrupt_of, interrupted_run, recording, step_loop
 
-__all__ = ["SCIPY_METHODS", "IMPLICIT_METHODS", "jacobian_function"]
+__all__ = ["SCIPY_METHODS", "IMPLICIT_METHODS", "run", "state_function"]
 
 SCIPY_METHODS = ("DOP853", "RK45", "RK23", "LSODA", "Radau", "BDF")
 IMPLICIT_METHODS = ("Radau", "BDF", "LSODA")
 
 
-def jacobian_function(model: NumericModel) -> Callable:
-    """``jac(t, y) -> ndarray (2n, 2n)`` for the model's bound parameters."""
+def __getattr__(name: str):
+    if name == "jacobian_function":  # moved to code generation (lagrange/integrate/__init__.py states the rule)
+        warnings.warn("lagrange.integrate.scipy_ivp.jacobian_function moved: use model.jacobian (the compiled "
+                      "model's generated Jacobian) or lagrange.codegen.run_functions.jacobian_function",
+                      DeprecationWarning, stacklevel=2)
+        return lambda model: model.jacobian
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
+def state_function(model: NumericModel, *, with_work: bool):
+    """``f(t, z)`` for scipy: ``[q̇, q̈]`` (+ the power dh/dt as the last entry when ``with_work``), with a
+    non-finite check that reports the time and state."""
     eqs = model.equations
-    n = eqs.n
-    ren = rename_map(eqs)
-    tt, ys, ps = numeric_arguments(eqs)
-    M = eqs.mass_matrix.xreplace(ren)
-    f = eqs.forcing.xreplace(ren)
-    # d sign(u)/du = 2 δ(u): zero inside every segment the friction driver integrates (σ frozen there)
-    def no_delta(expr):
-        return expr.replace(sp.DiracDelta, lambda *args: sp.S.Zero)
+    n2 = 2 * eqs.n
+    fun = model.fun
+    power = model.power if with_work else None
+    needs_lam = model.lam_required
+    dyn, pcall = model.dynamics, model._pcall
 
-    dM = [no_delta(M.diff(y)) for y in ys]
-    df = no_delta(f.jacobian(ys))
-    fn = sp.lambdify((tt, ys, ps), (M, f, df, dM), modules="numpy", cse=True)
-    params = list(model.params)
+    def f(t_, z):
+        try:
+            return evaluate(t_, z)
+        except SingularMassMatrixError as exc:  # mid-run: keep where it happened
+            raise SingularMassMatrixError(str(exc), t=float(t_), state=dict(zip(eqs.coordinates, z))) from None
+        except LagrangeError:
+            raise
+        except (ValueError, OverflowError, ZeroDivisionError) as exc:
+            raise model_fault(model, t_, z, exc) from None
 
-    def jac(t_, y):
-        Mv, fv, dfv, dMv = fn(t_, list(y), params)
-        Mv = np.array(Mv, dtype=float)
-        acc = np.linalg.solve(Mv, np.array(fv, dtype=float).ravel())
-        R = np.array(dfv, dtype=float).reshape(n, 2 * n)
-        for k in range(2 * n):
-            R[:, k] -= np.array(dMv[k], dtype=float) @ acc
-        J = np.zeros((2 * n, 2 * n))
-        J[:n, n:] = np.eye(n)
-        J[n:, :] = np.linalg.solve(Mv, R)
+    def evaluate(t_, z):
+        if power is None:
+            out = fun(t_, z)
+        else:
+            y = z[:n2]
+            if needs_lam:
+                try:
+                    full = list(dyn(t_, y, pcall))
+                except ZeroDivisionError:
+                    raise model.singular_error(t_, y) from None
+                out, lam = full[:n2], full[n2:]
+            else:
+                out, lam = list(fun(t_, y)), []
+            out.append(power(t_, y.tolist(), lam))
+        s = sum(out)
+        if isinstance(s, complex):  # plain Python: a negative number to a fractional power is complex
+            raise IntegrationError(
+                f"complex derivative at t={t_:.9g} ({state_text_of(model, z)}): the model left its domain (a "
+                "negative number raised to a fractional power, e.g. the square root of a negative number): a "
+                "coordinate passed a limit of the model, or a parameter is out of range",
+                t=float(t_), state=dict(zip([*model.equations.coordinates], z)))
+        if s != s or s in (math.inf, -math.inf):
+            raise IntegrationError(
+                f"non-finite derivative at t={t_:.9g} ({state_text_of(model, z)}); likely causes: a "
+                "singular configuration (division by zero in the model), a blow-up, or a parameter out "
+                "of range",
+                t=float(t_),
+                state=dict(zip([*model.equations.coordinates], z)),
+            )
+        return out
+
+    return f
+
+
+def _jacobian(model: NumericModel, method: str, conservative: bool):
+    """The generated Jacobian for implicit methods (unconstrained systems; scipy's finite differences
+    otherwise)."""
+    if method not in IMPLICIT_METHODS or model.m or model.schedule is not None:
+        return None  # (a feedback input's ∂u/∂y is not in the generated Jacobian: scipy's differences)
+    jy = model.jacobian
+    if conservative:
+        return jy
+    n2 = 2 * model.n
+
+    def jac(t_, z):  # the work integral does not feed back
+        J = np.zeros((n2 + 1, n2 + 1))
+        J[:n2, :n2] = jy(t_, z[:n2])
         return J
 
     return jac
+
+
+def _contact_events(model: NumericModel) -> list:
+    """Terminal events at the sign change of the multiplier of each unilateral constraint."""
+    out = []
+    for k, uni in enumerate(model.equations.unilateral):
+        if not uni:
+            continue
+
+        def ev(t_, z, k=k):
+            return float(model.multipliers(t_, z[: 2 * model.n])[k])
+
+        ev.terminal = True
+        ev.direction = -1
+        ev.contact = model.equations.constraint_names[k]
+        out.append(ev)
+    return out
+
+
+def _contact_message(model: NumericModel, res) -> str:
+    names = [n for n, u in zip(model.equations.constraint_names, model.equations.unilateral) if u]
+    if not names or res.t_events is None:
+        return ""
+    fired = [(names[i], tev[0]) for i, tev in enumerate(list(res.t_events)[-len(names):]) if len(tev)]
+    return "".join(f" Contact lost: the force of {nm} reached zero at t={te:.9g}; switch models there."
+                   for nm, te in fired)
+
+
+def run(req: RunRequest) -> Trajectory:
+    """Run a scipy method (or the compiled loop) for the validated request ``req``."""
+    from .compiled import choose_loop, integrate_compiled
+
+    eqs, method, (t0, t1) = req.equations, req.method, req.t_span
+    stabilization = req.stabilization.method
+    notes = [f"auto: {req.why}"] if req.why else []
+    if eqs.m and stabilization == "projection" and method not in STEPPABLE:
+        stabilization = "baumgarte"
+        notes.append(f"{method} keeps a step history, so constraint drift is controlled by Baumgarte "
+                     "stabilization instead of projection")
+    if req.loop == "compiled":
+        refuse_route("loop='compiled' (the compiled numba RK loops)", req.schedule)
+    use_compiled, loop_note = choose_loop(req.loop, backend=req.backend, model=req.model, eqs=eqs, method=method,
+                                          events=req.events, switches=req.switches,
+                                          varying_inputs=req.schedule is not None)
+    backend = "numba" if use_compiled and req.model is None else req.backend
+    notes += [loop_note] if loop_note else []
+    gains = (req.stabilization.alpha, req.stabilization.beta) if eqs.m and stabilization == "baumgarte" else None
+    model = model_for(eqs, req.params, req.model, backend, gains, inputs=req.constants, schedule=req.schedule)
+    y0 = req.y0
+    initial_report = {}
+    if eqs.m:
+        y0, initial_report = consistent_initial(model, t0, y0, req.stabilization.project_initial)
+    t_eval = np.linspace(t0, t1, req.n_points) if req.t_eval is None else req.t_eval
+    if not req.switches:
+        check_initial_mass_matrix(req.system, model, t0, y0)
+    if use_compiled:  # its IntegrationError already carries `partial` (lagrange.integrate.compiled)
+        try:
+            return integrate_compiled(model, method, (t0, t1), y0, t_eval, rtol=req.rtol, atol=req.atol,
+                                      max_step=req.max_step, label=f"{method} ({'; '.join(notes)})")
+        except ValueError as exc:  # bad t_eval or tolerances, worded as scipy words them
+            raise IntegrationError(f"integration failed: {exc}") from exc
+    return _run_scipy(req, model, y0, t_eval, stabilization, notes, initial_report)
+
+
+def _run_scipy(req: RunRequest, model: NumericModel, y0, t_eval, stabilization: str, notes: list,
+               initial_report: dict) -> Trajectory:
+    """scipy's loop: plain, projected, friction-switched or rough."""
+    from .rough import run_rough
+    from .switching import run_switched
+
+    eqs, method, (t0, t1) = req.equations, req.method, req.t_span
+    conservative = eqs.is_conservative
+    n2 = 2 * eqs.n
+    f = state_function(model, with_work=not conservative)
+    z0 = y0 if conservative else np.append(y0, 0.0)
+    jac = _jacobian(model, method, conservative)
+    all_events = list(req.events) + _contact_events(model)
+    log = StepLog(t_eval)
+    kwargs = dict(method=recording(method, log), rtol=req.rtol, atol=req.atol, max_step=req.max_step)
+    if jac is not None:
+        kwargs["jac"] = jac
+    try:
+        if req.switches:
+            res = run_switched(model, req.switches, (t0, t1), z0, t_eval, all_events, kwargs, not conservative)
+        elif eqs.is_rough:
+            proj = Projector(model.constraint_functions, eqs.n) if stabilization == "projection" else None
+            res = run_rough(model, lambda mm: state_function(mm, with_work=not conservative), (t0, t1), z0,
+                            t_eval, all_events, kwargs, proj)
+        elif eqs.m and stabilization == "projection":
+            proj = Projector(model.constraint_functions, eqs.n)
+            res = step_loop(f, (t0, t1), z0, t_eval=t_eval, events=all_events, post_step=proj, **kwargs)
+        else:
+            res = solve_ivp(f, (t0, t1), z0, t_eval=t_eval, events=all_events or None, **kwargs)
+    except (IntegrationError, SingularMassMatrixError) as exc:  # a numerical fault mid-run: keep the results
+        raise with_partial(exc, model, log, conservative, t0, y0, method) from None
+    except (KeyboardInterrupt, SystemError) as exc:  # Ctrl-C: IntegrationInterrupted with the partial result
+        if interrupt_of(exc) is None:
+            raise
+        raise interrupted_run(model, log, conservative, t0, y0, method) from None
+    except LagrangeError:
+        raise
+    except (ValueError, ZeroDivisionError, OverflowError, np.linalg.LinAlgError) as exc:
+        t_last, z_last = log.last if log.last is not None else (t0, z0)
+        cause = next((f" Likely cause: {text}." for kind, text in FAULT_CAUSES if isinstance(exc, kind)), "")
+        fault = IntegrationError(f"integration failed after t={t_last:.9g} ({state_text_of(model, z_last)}): "
+                                 f"{type(exc).__name__}: {exc}.{cause}")
+        fault.__cause__ = exc
+        raise with_partial(fault, model, log, conservative, t0, y0, method) from exc
+    if res.status == -1:
+        raise with_partial(collapse_error(model, res, t0, y0, log), model, log, conservative, t0, y0, method)
+    Y = res.y.T
+    if eqs.m:
+        notes.append(f"constraints: {stabilization}")
+    label = method + (f" ({'; '.join(notes)})" if notes else "")
+    return Trajectory(
+        t=res.t,
+        y=Y[:, :n2].copy(),
+        model=model,
+        method=label,
+        success=bool(res.success),
+        message=str(res.message) + _contact_message(model, res),
+        nfev=int(res.nfev),
+        work=None if conservative else Y[:, n2].copy(),
+        initial=(t0, y0.copy()),
+        initial_constraint_violation=initial_report,
+        point_params=getattr(res, "point_params", None),
+        switches=(res.switched_model, res.sigma, res.transitions) if req.switches else (),
+        t_events=list(res.t_events) if res.t_events is not None else [],
+        y_events=[np.asarray(v)[:, :n2] if len(v) else np.empty((0, n2)) for v in res.y_events]
+        if res.y_events is not None
+        else [],
+    )

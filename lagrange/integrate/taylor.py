@@ -124,14 +124,6 @@ def available_interpreter() -> str | None:
         return None
 
 
-def tape_of(eqs):
-    """Compatibility for :mod:`lagrange.integrate.run` until the method registry checks capabilities in
-    codegen: the tape of ``eqs`` (raises TapeError). Prefer ``model.taylor_tape()``."""
-    from ..codegen.tape import tape_of as build  # the one import of codegen left here: goes with run.py's rewrite
-
-    return build(eqs)
-
-
 class _Chunks:
     """Runs a tape engine in chunks of about :data:`CHUNK_SECONDS`, so Ctrl-C is answered between them."""
 

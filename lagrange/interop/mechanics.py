@@ -123,7 +123,7 @@ def _no_options(obj, coordinates, options) -> None:
 
 
 def _system(coordinates, T, V, **options):
-    from ..model.system import System
+    from .. import System  # through the package's lazy table: model.system imports this module (to_mechanics)
 
     return System(list(coordinates), T=T, V=V, **options)
 

@@ -78,7 +78,7 @@ def _check_keys_and_choices(options: dict, flags: Mapping, label: str) -> None:
     choices = {"backend": BACKENDS, "friction": ("events", "regularize"), "stabilization": STABILIZATIONS,
                "loop": LOOPS}
     for key, values in choices.items():
-        if key in options and options[key] not in values:
+        if key in options and not hasattr(options[key], "__dataclass_fields__") and options[key] not in values:
             raise SpecError(f"{_where(key, flags, label)}: {options[key]!r} is not one of {', '.join(values)}")
 
 
@@ -147,4 +147,38 @@ def merge_run_options(spec_options: Mapping, flags: Mapping, label: str) -> dict
                         f"({', '.join(FIXED_STEP)}); {method} is adaptive: set --rtol/--atol instead")
     else:
         options.pop("step", None)
+    return _as_objects(options, flags, label)
+
+
+def _as_objects(options: dict, flags: Mapping, label: str) -> dict:
+    """The spec's flat friction and stabilization values as option objects
+    (:class:`~lagrange.integrate.options.FrictionOptions`, :class:`~lagrange.integrate.options.Stabilization`),
+    every value validated: a SpecError names the ``[simulate]`` key (or flag) and the limit."""
+    from ..errors import MethodError, OptionError
+    from ..integrate.options import MAX_POINTS, FrictionOptions, Stabilization
+
+    def refuse(key: str, exc: Exception):
+        return SpecError(f"{_where(key, flags, label)}: {exc}")
+
+    if "n_points" in options:
+        n = options["n_points"]
+        if isinstance(n, bool) or not isinstance(n, int) or not 2 <= n <= MAX_POINTS:
+            raise SpecError(f"{_where('n_points', flags, label)}: must be an integer between 2 and {MAX_POINTS:,}, "
+                            f"got {n!r}")
+    if "friction_epsilon" in options or "friction" in options:
+        try:
+            options["friction"] = FrictionOptions(options.get("friction", "events"),
+                                                  options.pop("friction_epsilon", 1e-6))
+        except (OptionError, MethodError) as exc:
+            raise refuse("friction", exc) from None
+    keys = ("stabilization", "baumgarte", "project_initial")
+    if any(k in options for k in keys):
+        gains = options.pop("baumgarte", (10.0, 10.0))
+        if not isinstance(gains, list | tuple) or len(gains) != 2:
+            raise SpecError(f"{_where('baumgarte', flags, label)}: must be a pair [alpha, beta], got {gains!r}")
+        try:
+            options["stabilization"] = Stabilization(options.get("stabilization", "projection"), *gains,
+                                                     project_initial=options.pop("project_initial", True))
+        except (OptionError, MethodError) as exc:
+            raise refuse("stabilization", exc) from None
     return options

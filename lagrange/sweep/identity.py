@@ -68,7 +68,7 @@ def run_config(task: Any) -> str:
     if callable(fingerprint):
         text = fingerprint()
     else:
-        from .task import dumps_task
+        from .pickling import dumps_task
 
         try:
             text = "task:" + hashlib.sha256(dumps_task(task)).hexdigest()

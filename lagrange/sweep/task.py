@@ -28,6 +28,7 @@ from ..conventions import VELOCITY_SUFFIX
 from ..errors import SweepError
 from ..integrate.run import initial_state
 from ..model.coordinates import coordinate_name
+from .pickling import dumps_task
 
 __all__ = ["SimulationTask", "InputExpressions", "execute", "dumps_task", "state_names", "scalar_columns",
            "release_task", "KEEP_TASKS"]
@@ -231,24 +232,6 @@ def _user_summaries(summaries: Sequence[Summary], traj) -> dict[str, Any]:
     return out
 
 
-def dumps_task(task) -> bytes:
-    """Pickle a task once for all runs (cloudpickle when installed: lambdas and notebook functions travel
-    too). Raises SweepError saying what to change when it cannot be pickled."""
-    try:
-        import cloudpickle
-
-        return cloudpickle.dumps(task)
-    except ImportError:
-        pass
-    except Exception as exc:  # noqa: BLE001 - cloudpickle raises many types; report one clear error
-        raise SweepError(f"the sweep task cannot be sent to worker processes: {type(exc).__name__}: {exc}. "
-                         "Run it in this process with workers=0") from None
-    try:
-        return pickle.dumps(task)
-    except Exception as exc:  # noqa: BLE001
-        raise SweepError(f"the sweep task cannot be pickled for worker processes ({type(exc).__name__}: {exc}): "
-                         "summary, setup and event functions must be module-level functions (or install "
-                         "cloudpickle), or run in this process with workers=0") from None
 
 
 #: per process: the unpickled task of each recent sweep (unpickled once, not per run), least recently used first

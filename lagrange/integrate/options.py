@@ -1,0 +1,220 @@
+"""Option objects of :func:`~lagrange.integrate.run.simulate`, and the validation of every simulate option.
+
+The options that belong together travel as small frozen dataclasses that check themselves on construction
+(:class:`~lagrange.errors.OptionError` naming the option, the value and the limit):
+
+* :class:`FrictionOptions` — ``simulate(friction=FrictionOptions("regularize", epsilon=1e-4))``; the plain
+  string ``friction="regularize"`` is shorthand for ``FrictionOptions("regularize")``;
+* :class:`Stabilization` — ``simulate(stabilization=Stabilization("baumgarte", alpha=5, beta=5))``, with
+  ``project_initial``; ``stabilization="none"`` is shorthand;
+* :class:`StepOptions` — ``simulate(method="gl4", step=StepOptions(0.01))``; a number ``step=0.01`` is
+  shorthand.
+
+The flat keywords ``friction_epsilon``, ``baumgarte`` and ``project_initial`` still work for one release, with a
+:class:`DeprecationWarning` (:func:`merge_deprecated`). :func:`check_run_options` validates the numbers
+(tolerances, ``n_points``, ``max_step``, ``t_eval``) before anything is compiled; the limits are the constants
+below.
+"""
+
+from __future__ import annotations
+
+import math
+import warnings
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..errors import MethodError, OptionError
+
+__all__ = ["FrictionOptions", "Stabilization", "StepOptions", "FRICTIONS", "STABILIZATIONS", "MAX_POINTS",
+           "MAX_STEPS", "check_run_options", "merge_deprecated", "as_friction", "as_stabilization", "as_step"]
+
+FRICTIONS = ("events", "regularize")
+STABILIZATIONS = ("projection", "baumgarte", "none")
+#: most output points a run may record (8 bytes × 2n per point: 10⁷ points of a 5-DOF system is 800 MB)
+MAX_POINTS = 10_000_000
+#: most fixed steps (or span / max_step) a run may take: beyond this it would run for days
+MAX_STEPS = 10**9
+
+
+def _positive_finite(option: str, value, *, allow_zero: bool = False) -> float:
+    """``value`` as a float, or OptionError naming ``option`` when it is not a finite number > 0 (>= 0)."""
+    if isinstance(value, bool) or not isinstance(value, int | float | np.integer | np.floating):
+        raise OptionError(f"{option} must be a number, got {value!r}")
+    v = float(value)
+    if not math.isfinite(v) or v < 0 or (v == 0 and not allow_zero):
+        raise OptionError(f"{option} must be a finite number {'>= 0' if allow_zero else '> 0'}, got {value!r}")
+    return v
+
+
+def _choice(option: str, value, choices: tuple[str, ...]) -> str:
+    if not isinstance(value, str) or value not in choices:
+        raise MethodError(f"{option} must be one of {', '.join(map(repr, choices))}, got {value!r}")
+    return value
+
+
+@dataclass(frozen=True)
+class FrictionOptions:
+    """How dry-friction ``sign()`` switches are integrated (:mod:`lagrange.integrate.switching`).
+
+    Attributes
+    ----------
+    treatment : ``"events"`` (default: exact, segment by segment) or ``"regularize"``
+        (``sign(u) → u/sqrt(u² + ε²)``)
+    epsilon : ε, the velocity scale of the regularization (finite, > 0; default 1e-6)
+    """
+
+    treatment: str = "events"
+    epsilon: float = 1e-6
+
+    def __post_init__(self):
+        _choice("friction", self.treatment, FRICTIONS)
+        object.__setattr__(self, "epsilon", _positive_finite("friction epsilon", self.epsilon))
+
+    def __str__(self) -> str:
+        return self.treatment if self.treatment == "events" else f"{self.treatment} (epsilon {self.epsilon:g})"
+
+
+@dataclass(frozen=True)
+class Stabilization:
+    """Constraint drift control (:mod:`lagrange.integrate.constrained`).
+
+    Attributes
+    ----------
+    method : ``"projection"`` (default), ``"baumgarte"`` or ``"none"``
+    alpha, beta : Baumgarte's gains in 1/time (finite, >= 0; default 10, 10)
+    project_initial : project an inconsistent initial state onto the constraints (default) or raise
+    """
+
+    method: str = "projection"
+    alpha: float = 10.0
+    beta: float = 10.0
+    project_initial: bool = True
+
+    def __post_init__(self):
+        _choice("stabilization", self.method, STABILIZATIONS)
+        object.__setattr__(self, "alpha", _positive_finite("Baumgarte alpha", self.alpha, allow_zero=True))
+        object.__setattr__(self, "beta", _positive_finite("Baumgarte beta", self.beta, allow_zero=True))
+        if not isinstance(self.project_initial, bool | np.bool_):
+            raise OptionError(f"project_initial must be True or False, got {self.project_initial!r}")
+
+    def __str__(self) -> str:
+        return self.method
+
+
+@dataclass(frozen=True)
+class StepOptions:
+    """The step of a fixed-step (geometric) method.
+
+    Attributes
+    ----------
+    h : the step (finite, > 0; the run takes ``round(span / h)`` steps, at most :data:`MAX_STEPS`)
+    """
+
+    h: float
+
+    def __post_init__(self):
+        object.__setattr__(self, "h", _positive_finite("step", self.h))
+
+
+def as_friction(value) -> FrictionOptions:
+    """``friction=`` as a :class:`FrictionOptions` (a string is the treatment)."""
+    return value if isinstance(value, FrictionOptions) else FrictionOptions(_choice("friction", value, FRICTIONS))
+
+
+def as_stabilization(value) -> Stabilization:
+    """``stabilization=`` as a :class:`Stabilization` (a string is the method)."""
+    if isinstance(value, Stabilization):
+        return value
+    return Stabilization(_choice("stabilization", value, STABILIZATIONS))
+
+
+def as_step(value) -> StepOptions | None:
+    """``step=`` as a :class:`StepOptions` (a number is the step; None: not given)."""
+    if value is None or isinstance(value, StepOptions):
+        return value
+    return StepOptions(value)
+
+
+_DEPRECATED = object()
+
+
+def merge_deprecated(friction, stabilization, *, friction_epsilon=_DEPRECATED, baumgarte=_DEPRECATED,
+                     project_initial=_DEPRECATED, stacklevel: int = 3) -> tuple[FrictionOptions, Stabilization]:
+    """The friction and stabilization objects, with the deprecated flat keywords folded in (each one given
+    warns once with :class:`DeprecationWarning` and says what replaces it)."""
+    fr, st = as_friction(friction), as_stabilization(stabilization)
+    if friction_epsilon is not _DEPRECATED:
+        warnings.warn("simulate(friction_epsilon=...) is deprecated: pass friction=FrictionOptions(treatment, "
+                      "epsilon=...)", DeprecationWarning, stacklevel=stacklevel)
+        fr = FrictionOptions(fr.treatment, friction_epsilon)
+    changes = {}
+    if baumgarte is not _DEPRECATED:
+        warnings.warn("simulate(baumgarte=(alpha, beta)) is deprecated: pass stabilization=Stabilization("
+                      "'baumgarte', alpha=..., beta=...)", DeprecationWarning, stacklevel=stacklevel)
+        try:
+            alpha, beta = baumgarte
+        except (TypeError, ValueError):
+            raise OptionError(f"baumgarte must be a pair (alpha, beta), got {baumgarte!r}") from None
+        changes.update(alpha=alpha, beta=beta)
+    if project_initial is not _DEPRECATED:
+        warnings.warn("simulate(project_initial=...) is deprecated: pass stabilization=Stabilization(..., "
+                      "project_initial=...)", DeprecationWarning, stacklevel=stacklevel)
+        changes["project_initial"] = project_initial
+    if changes:
+        st = Stabilization(**{"method": st.method, "alpha": st.alpha, "beta": st.beta,
+                              "project_initial": st.project_initial, **changes})
+    return fr, st
+
+
+def check_run_options(t_span, *, rtol, atol, n_points, max_step, t_eval, step: StepOptions | None,
+                      adaptive: bool) -> np.ndarray | None:
+    """Validate the numeric options of a run over ``t_span = (t0, t1)``; return ``t_eval`` as an array.
+
+    Raises
+    ------
+    OptionError
+        ``rtol`` not finite or <= 0, ``atol`` not finite or < 0, ``atol = rtol = 0``; ``n_points`` not an
+        integer in [2, MAX_POINTS]; ``max_step`` not > 0 or so small that the span needs more than MAX_STEPS
+        steps; ``step`` the same; ``t_eval`` not one-dimensional, not finite, outside the span, unsorted or
+        longer than MAX_POINTS.
+    """
+    t0, t1 = t_span
+    span = abs(t1 - t0)
+    if adaptive:
+        _positive_finite("rtol", rtol)  # so atol = rtol = 0 is refused too
+        _positive_finite("atol", atol, allow_zero=True)
+        if isinstance(max_step, bool) or not isinstance(max_step, int | float | np.integer | np.floating) \
+                or math.isnan(max_step) or max_step <= 0:
+            raise OptionError(f"max_step must be a number > 0 (inf: no limit), got {max_step!r}")
+        if span / float(max_step) > MAX_STEPS:
+            raise OptionError(f"max_step={max_step!r} would take more than {MAX_STEPS:.0e} steps over the span "
+                              f"{span:g} (span / max_step = {span / float(max_step):.3g}); the limit is max_step "
+                              f">= {span / MAX_STEPS:.3g}")
+    if step is not None and span / step.h > MAX_STEPS:
+        raise OptionError(f"step={step.h!r} would take {span / step.h:.3g} steps over the span {span:g}, more than "
+                          f"the limit {MAX_STEPS:.0e}; use step >= {span / MAX_STEPS:.3g}")
+    if isinstance(n_points, bool) or not isinstance(n_points, int | np.integer):
+        raise OptionError(f"n_points must be an integer, got {n_points!r}")
+    if not 2 <= n_points <= MAX_POINTS:
+        raise OptionError(f"n_points must be between 2 and {MAX_POINTS:,}, got {n_points}")
+    if t_eval is None:
+        return None
+    try:
+        te = np.asarray(t_eval, dtype=float)
+    except (TypeError, ValueError):
+        raise OptionError(f"t_eval must be a sequence of times, got {t_eval!r}") from None
+    if te.ndim != 1:
+        raise OptionError(f"t_eval must be one-dimensional, got shape {te.shape}")
+    if te.size > MAX_POINTS:
+        raise OptionError(f"t_eval has {te.size:,} times, more than the limit {MAX_POINTS:,}")
+    if te.size and not np.all(np.isfinite(te)):
+        raise OptionError("t_eval contains a non-finite time")
+    lo, hi = min(t0, t1), max(t0, t1)
+    if te.size and (te.min() < lo or te.max() > hi):
+        bad = te[(te < lo) | (te > hi)][0]
+        raise OptionError(f"t_eval contains t={bad:g}, outside the span [{lo:g}, {hi:g}]")
+    d = np.diff(te)
+    if d.size and ((t1 > t0 and not d.min() > 0) or (t1 < t0 and not d.max() < 0)):
+        raise OptionError("t_eval must be strictly sorted in the direction of integration")
+    return te

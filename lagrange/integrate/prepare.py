@@ -1,0 +1,175 @@
+"""Preparing a run: the initial state, the model for the equations, the initial mass matrix, the inputs.
+
+Shared by the run functions of the methods (:mod:`lagrange.integrate.registry`); everything numeric comes from
+the compiled model (:class:`~lagrange.codegen.numeric.NumericModel`).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping, Sequence
+from functools import lru_cache
+
+import numpy as np
+from scipy.linalg.lapack import dsyev
+
+from ..codegen.numeric import NumericModel
+from ..conventions import VELOCITY_SUFFIX
+from ..errors import InitialConditionError, InputError, OptionError, ParameterError, SingularMassMatrixError
+from ..model.coordinates import coordinate_name, is_coordinate
+
+__all__ = ["initial_state", "model_for", "check_initial_mass_matrix", "refuse_route", "split_inputs", "check_model",
+           "GimbalLockWarning"]
+
+
+def initial_state(coords: Sequence, initial: Mapping) -> np.ndarray:
+    """``y0 = [q, q̇]`` from a dict keyed by coordinates, their derivatives or names (``"x_dot"``).
+
+    Raises :class:`InitialConditionError` naming every missing, unknown or non-finite entry.
+    """
+    names, slot_of = _slots(tuple(coords))
+    n = len(names)
+    values = [math.nan] * (2 * n)
+    filled = [False] * (2 * n)
+    problems = []
+    for key, value in initial.items():
+        try:
+            idx = slot_of.get(key)
+        except TypeError:  # an unhashable key
+            idx = None
+        if idx is None:
+            problems.append(f"{key} is not a coordinate or velocity of this system ({', '.join(names)})")
+            continue
+        try:
+            v = float(value)
+        except (TypeError, ValueError):
+            problems.append(f"initial value of {key} = {value!r} is not a number")
+            continue
+        if not math.isfinite(v):
+            problems.append(f"initial value of {key} = {v} is not finite")
+        values[idx], filled[idx] = v, True
+    if not all(filled):
+        missing = [names[i] if i < n else names[i - n] + VELOCITY_SUFFIX for i in range(2 * n) if not filled[i]]
+        problems.append(f"missing initial value(s) for {', '.join(missing)}")
+    if problems:
+        raise InitialConditionError("; ".join(problems))
+    return np.array(values, dtype=float)
+
+
+@lru_cache(maxsize=256)
+def _slots(coords: tuple) -> tuple[list[str], dict]:
+    """The coordinate names and the state slot of every accepted key: a coordinate or its name (i), its
+    velocity ``q.diff(t)`` or ``"<name>_dot"`` (n + i)."""
+    n = len(coords)
+    names = [coordinate_name(c) for c in coords]
+    slot_of: dict = {}
+    for i, (c, name) in enumerate(zip(coords, names)):  # names first: a coordinate may be called "x_dot"
+        slot_of.setdefault(name, i)
+        if is_coordinate(c):
+            slot_of.setdefault(c, i)
+            slot_of.setdefault(c.diff(c.args[0]), n + i)
+    for i, name in enumerate(names):
+        slot_of.setdefault(name + VELOCITY_SUFFIX, n + i)
+    return names, slot_of
+
+
+class GimbalLockWarning(UserWarning):
+    """Euler angles near θ = 0 or π: the mass matrix is nearly singular (gimbal lock)."""
+
+
+def _gimbal_hint(system) -> str:
+    """The gimbal-lock hint when a body of ``system`` has Euler angles, else ""; remembered per bodies tuple."""
+    seen = getattr(system, "__dict__", {}).get("_gimbal_hint")
+    if seen is not None and seen[0] is system.bodies:
+        return seen[1]
+    hint = _euler_hint(system.bodies)
+    if hasattr(system, "__dict__"):
+        system.__dict__["_gimbal_hint"] = (system.bodies, hint)
+    return hint
+
+
+def _euler_hint(bodies) -> str:
+    from ..model.rotations import EulerAngles
+
+    if any(isinstance(getattr(b, "orientation", None), EulerAngles) for b in bodies):
+        return (" Gimbal lock: Wells' Euler angles are singular at θ = 0 or π (only ψ + φ is defined there). "
+                "Use RigidBody(..., orientation=Quaternion(q0, q1, q2, q3)) — it is regular everywhere (a "
+                "sleeping top) — or tilt the reference axes.")
+    return ""
+
+
+def check_initial_mass_matrix(system, model: NumericModel, t0: float, y0) -> None:
+    """Raise on a singular mass matrix (naming coordinates, with a gimbal-lock hint for Euler angles) and
+    warn when it is nearly singular."""
+    hint = _gimbal_hint(system)
+    try:
+        model.fun(t0, y0)
+    except SingularMassMatrixError as exc:
+        raise SingularMassMatrixError(str(exc).rstrip(".") + "." + hint) from None
+    if hint and not model.m:
+        w, _, info = dsyev(model.mass_matrix(t0, y0), compute_v=0)  # M is symmetric: LAPACK's eigenvalues
+        w = [abs(x) for x in w.tolist()]
+        cond = max(w) / min(w) if info == 0 and min(w) > 0 else math.inf  # its 2-norm condition number
+        if cond > 1e8:
+            import warnings
+
+            warnings.warn(f"the mass matrix is nearly singular at the initial state (condition number "
+                          f"{cond:.2g}).{hint}", GimbalLockWarning, stacklevel=3)
+
+
+def model_for(eqs, params, model: NumericModel | None, backend: str, baumgarte: tuple | None = None, *,
+              inputs: dict | None = None, schedule=None) -> NumericModel:
+    """The model of the run: ``model`` (checked by :func:`check_model`) with ``params`` and the input constants
+    ``inputs`` bound BY NAME when it was built for ``eqs`` (and no Baumgarte ``baumgarte=(α, β)`` is asked for),
+    else ``eqs`` compiled with those values (and the given model's backend); then the ``schedule`` of the
+    time-varying inputs attached."""
+    values = {**dict(params), **(inputs or {})}
+    if model is not None and (model.equations is eqs or model.equations == eqs) and not (baumgarte and eqs.m):
+        out = model.with_params(values) if values else model
+    else:
+        if model is not None:  # the given model's values fill in names the call leaves out
+            values = {**{s.name: v for s, v in zip(model.equations.numeric_parameters, model.params)}, **values}
+        out = NumericModel.build(eqs, values, backend=backend if model is None else model.backend,
+                                 baumgarte=baumgarte if eqs.m else None)
+    return out if out.schedule is schedule else out.with_schedule(schedule)
+
+
+def check_model(model, eqs) -> None:
+    """Refuse a ``model=`` that is not a NumericModel of the system's equations ``eqs`` (same coordinates,
+    parameters and equations; a model of another system would silently integrate the wrong equations)."""
+    if model is None:
+        return
+    if not isinstance(model, NumericModel):
+        raise OptionError(f"model= must be a NumericModel from System.compile, got {type(model).__name__}")
+    if model.equations is eqs or model.equations == eqs:
+        return
+    mine = [coordinate_name(c) for c in eqs.coordinates]
+    theirs = [coordinate_name(c) for c in model.equations.coordinates]
+    what = (f"coordinates {', '.join(theirs)} instead of {', '.join(mine)}" if mine != theirs else
+            "the same coordinates but different equations or parameters")
+    raise OptionError(f"model= was compiled for a different system ({what}): pass the model compiled from this "
+                      "system (System.compile), or none")
+
+
+def refuse_route(route: str, schedule) -> None:
+    """InputError when ``route`` cannot evaluate the time-varying inputs of ``schedule``."""
+    if schedule is not None:
+        raise InputError(f"{route} cannot run time-varying inputs ({schedule.describe()}): it does not call Python "
+                         f"per step, so it supports constant inputs only. Time-varying inputs run with "
+                         f"{NumericModel.varying_routes()}")
+
+
+def split_inputs(eqs, params: Mapping, inputs, t_span, y0) -> tuple[dict, dict, object]:
+    """``(params with the inputs' constants, those constants, the schedule of the varying ones)``; refuses an
+    input given among the parameters."""
+    names = {u.name for u in eqs.inputs}
+    given = [getattr(k, "name", None) if not isinstance(k, str) else k for k in params]
+    given = [str(k) if g is None else g for k, g in zip(params, given)]
+    wrong = [k for k in given if k in names]
+    if wrong:
+        raise ParameterError(f"{', '.join(wrong)} {'is an input' if len(wrong) == 1 else 'are inputs'}, not "
+                             f"parameter(s): give the value(s) as simulate(..., inputs={{'{wrong[0]}': ...}})")
+    if not eqs.inputs and not inputs:
+        return dict(params), {}, None
+    constants, schedule = NumericModel.resolve_inputs(eqs, inputs, t_span, y0)
+    return {**params, **constants}, constants, schedule

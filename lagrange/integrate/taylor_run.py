@@ -1,0 +1,55 @@
+"""The run function of ``method="taylor"`` (registry entry in :mod:`lagrange.integrate.registry`): model, initial
+state, then :func:`lagrange.integrate.taylor.integrate_taylor` as it is. The registry has already refused events,
+constraints, friction switches and time-varying inputs."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ..codegen.numeric import NumericModel
+from ..errors import IntegrationError, LagrangeError
+from ..results.trajectory import Trajectory
+from .prepare import check_initial_mass_matrix, model_for, refuse_route
+from .request import RunRequest
+
+__all__ = ["run", "taylor_ready", "precheck"]
+
+
+def precheck(eqs) -> None:
+    """Refuse constrained equations with the tape's own error, which names the constraint (a TapeError)."""
+    if eqs.m:
+        NumericModel.tape_for(eqs)
+
+
+def taylor_ready(eqs) -> bool:
+    """Whether ``method="taylor"`` can run ``eqs`` here (a C compiler or numba, analytic unconstrained
+    equations)."""
+    from .taylor import available_interpreter
+
+    if available_interpreter() is None:
+        return False
+    try:
+        NumericModel.tape_for(eqs)
+    except TypeError as exc:  # TapeError (a LagrangeError): not analytic (sign, Abs, ...)
+        if not isinstance(exc, LagrangeError):
+            raise
+        return False
+    return True
+
+
+def run(req: RunRequest) -> Trajectory:
+    """``method="taylor"`` (:mod:`lagrange.integrate.taylor`)."""
+    from .taylor import integrate_taylor, interpreter
+
+    refuse_route("method='taylor' (its tape holds constants only)", req.schedule)
+    model = model_for(req.equations, req.params, req.model, req.backend, inputs=req.constants)
+    t0, t1 = req.t_span
+    check_initial_mass_matrix(req.system, model, t0, req.y0)
+    t_eval = np.linspace(t0, t1, req.n_points) if req.t_eval is None else req.t_eval
+    how = "compiled series" if model.backend == "numba" else f"interpreted tape, {interpreter()}"
+    label = f"taylor ({how}" + (f"; auto: {req.why})" if req.why else ")")
+    try:
+        return integrate_taylor(model, (t0, t1), req.y0, t_eval, rtol=req.rtol, atol=req.atol,
+                                max_step=req.max_step, label=label)
+    except ValueError as exc:
+        raise IntegrationError(f"integration failed: {exc}") from exc
