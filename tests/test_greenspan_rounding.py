@@ -166,3 +166,20 @@ def test_p1_drift_rate_of_a_non_homogeneous_top_is_its_momentum(number):
     if number == 11:
         homogeneous = gs.run_rigid(gs.EXAMPLES[1], 110.0, backend="numba", rtol=1e-9, atol=1e-11).summary
         assert np.linalg.norm(homogeneous.P1_drift_rate) < 0.02 * np.linalg.norm(u)
+
+
+@pytest.mark.slow  # the rigid model through the CLI derives its system (tens of CPU seconds when not cached)
+def test_cli_prints_fall_drift_energy_and_solver(capsys):
+    from lagrange.cli import main
+
+    assert main(["simulate", "greenspan-10", "--model", "molecular", "--t-end", "2.5", "-q"]) == 0
+    out = capsys.readouterr().out
+    fall = float(out.split("the top falls at t = ")[1].split()[0])
+    assert 1.8 < fall < 1.9 and "(a weighted vertex reaches the plane z = 0)" in out
+    assert "P1 drift: (" in out and "solver: fixed point; 2.00 fixed-point iterations per step" in out
+    ulps = float(out.split(" ulp of |E|")[0].rsplit("(relative ", 1)[1].split(", ")[1])
+    assert 0 <= ulps < 0.05
+    assert main(["simulate", "greenspan-10", "--t-end", "2.5", "-q"]) == 0
+    out = capsys.readouterr().out
+    rigid_fall = float(out.split("the top falls at t = ")[1].split()[0])
+    assert rigid_fall == pytest.approx(fall, abs=2e-3) and "P1 drift: (" in out
