@@ -138,13 +138,13 @@ def test_fall_time_and_p1_drift_in_both_models():
 
 @pytest.mark.slow
 def test_energy_drift_over_two_million_steps_translated():
-    """2,000,000 steps (t = 20) of example 1, 100 from the origin: energy within 0.1 ulp of |E|, the centre
+    """2,000,000 steps (t = 20) of example 1, 100 from the origin: energy within 0.25 ulp of |E|, the centre
     of mass fixed to 1e-12 (the 11,000,000-step run of the paper is in benchmarks/greenspan_solver.py)."""
     ex = gs.EXAMPLES[1]
     run = gs.run_molecular(ex, 20.0, record_every=20_000, offset=SHIFT)
     res = run.result
     assert res.newton_steps == 0 and res.steps == 2_000_000
-    assert res.energy_drift_ulps < 0.1
+    assert res.energy_drift_ulps < 0.25
     c = _centre(res, run.model.masses)
     assert np.max(np.abs(c[:, :2] - c[0, :2])) < 1e-12
 
