@@ -21,8 +21,8 @@ EPS = np.finfo(float).eps
 SHIFT = np.array([100.0, -100.0, 0.0])
 
 
-@pytest.fixture(scope="module")
-def top():
+@pytest.fixture
+def top():  # function scope: built inside the session's isolated cache (tests/conftest.py), compiled once
     ex = gs.EXAMPLES[1]
     return gs.molecular_model(ex.masses), *gs.initial_vertices(ex)
 
