@@ -310,8 +310,10 @@ def _greenspan_report(label, t, vertices, fell, fall_time, extra: str, plot: str
     print(f"  P1 (contact point) ends at ({sm.P1[-1, 0]:.6f}, {sm.P1[-1, 1]:.6f})")
     print(f"  Pbar (geometric centre) ends at ({sm.Pbar[-1, 0]:.6f}, {sm.Pbar[-1, 1]:.6f}, {sm.Pbar[-1, 2]:.6f})")
     print(f"  height of Pbar between {sm.zbar_range[0]:.6f} and {sm.zbar_range[1]:.6f}")
-    print(f"  the top falls at t = {fall_time:.6g}" if fell else "  the top does not fall")
-    print(f"  {extra}")
+    for line in sm.report():
+        print(f"  {line}")
+    for line in extra.splitlines():
+        print(f"  {line}")
     if plot:
         from .plot.trajectory import new_figure
 
@@ -343,10 +345,10 @@ def _greenspan_rigid(args, spec, t_end: float, params: dict, initial: dict, opti
     options = {"rtol": 1e-10, "atol": 1e-12, **options}
     with heartbeat(f"integrating {spec.label} (rigid model) to t = {t_end:g} with {options['method']}"), \
             _partial_csv(args):
-        _, sol, verts = run_rigid(spec.problem, t_end, params=params, initial=initial, **options)
-    fall = [float(e[0]) for e in sol.t_events if len(e)]
+        rigid = run_rigid(spec.problem, t_end, params=params, initial=initial, **options)
+    sol, verts, fall = rigid.trajectory, rigid.vertices, rigid.fall_time
     _greenspan_report(f"{spec.label} (rigid model, 5 DOF, {sol.method}, rtol {options['rtol']:g}, atol "
-                      f"{options['atol']:g})", sol.t, verts, bool(fall), min(fall) if fall else None,
+                      f"{options['atol']:g})", sol.t, verts, fall is not None, fall,
                       f"energy error (relative): {sol.energy_error():.3e}", args.plot)
     if args.csv:
         sol.to_csv(args.csv)
@@ -373,8 +375,6 @@ def _greenspan_example(spec: str):
 def _greenspan_molecular(args) -> int:
     import time
 
-    import numpy as np
-
     from .discrete.greenspan import A_PAIR, G, run_molecular
     from .progress import heartbeat
 
@@ -398,13 +398,15 @@ def _greenspan_molecular(args) -> int:
     t0 = time.perf_counter()
     with heartbeat(f"running {steps:,} discrete-gradient steps (the first run compiles the loop with numba, "
                    "one time)"):
-        model, res = run_molecular(ex, t_end, dt=dt, A=params.get("A", A_PAIR), g=params.get("g", G),
-                                   record_every=max(1, round(steps / 2200)))  # ~2200 states, as the paper's run
+        _, res = run_molecular(ex, t_end, dt=dt, A=params.get("A", A_PAIR), g=params.get("g", G),
+                               record_every=max(1, round(steps / 2200)))  # ~2200 states, as the paper's run
     wall = time.perf_counter() - t0
-    E = model.energy(res.x, res.v)
+    E0 = float(res.energy[0])
     _greenspan_report(f"greenspan-{ex.number} (molecular model, discrete gradient, dt = {dt:g})", res.t, res.x,
                       res.fell, res.fall_time,
-                      f"{res.steps} steps in {wall:.1f} s; relative energy drift {np.ptp(E) / abs(E[0]):.2e}",
+                      f"{res.steps} steps in {wall:.1f} s; {res.solver_report()}\n"
+                      f"energy drift max|E - E0| = {res.energy_drift:.3e} (relative {res.energy_drift / abs(E0):.2e}, "
+                      f"{res.energy_drift_ulps:.1f} ulp of |E| = {abs(E0):.6g})",
                       args.plot)
     if args.csv:
         _molecular_csv(args.csv, res)

@@ -12,27 +12,41 @@ Q. Appl. Math., 1996): four particles P1..P4 at the vertices of a regular tetrah
   Euler angles (ψ, θ, φ) — declared with the public API (four :class:`~lagrange.Particle` placed with
   the :class:`~lagrange.EulerAngles` rotation of the body frame), integrated by an adaptive method.
 
-The run stops when any of z2, z3, z4 reaches 0 (the top has fallen). Pbar is the geometric centre (the
-mean of the four vertices).
+**Fall time.** The top *has fallen* at the first time t_f at which one of the weighted vertices P2, P3, P4
+reaches the support plane, z = 0 (the paper's stopping rule; the tip P1 is on the plane throughout). The
+rigid model locates t_f as a terminal event of its adaptive integrator (root of the dense output, to the
+run's tolerance); the molecular model interpolates the height linearly inside the step where it first
+becomes ≤ 0 (the scheme's positions are piecewise linear in t; error O(dt²)). Both runs stop there.
+
+**P1 drift.** The contact point's net displacement in the plane, ``P1(t_end) − P1(0)``, and its mean
+velocity, the least-squares slope of P1(t) over the run (its loops and cusps average out): the drift of the
+paper's non-homogeneous tops, whose horizontal momentum Σ m_i v_i is not zero (the centre of mass, and
+with it the loops of P1, move at Σ m_i v_i / Σ m_i). For a homogeneous top the momentum is exactly zero
+and the horizontal centre of mass stays fixed.
+
+Pbar is the geometric centre (the mean of the four vertices).
 """
 
 from __future__ import annotations
 
 from collections.abc import Mapping
 from dataclasses import dataclass
+from typing import NamedTuple
 
 import numpy as np
 import sympy as sp
 
 from ..conventions import VELOCITY_SUFFIX, t
+from ..errors import InitialConditionError
 from ..model.bodies import Particle
 from ..model.coordinates import coordinate_name, coordinates, is_coordinate, parameters
 from ..model.rotations import EulerAngles
 from ..model.system import System
-from .pair_dg import PairSystem
+from .pair_dg import DGResult, PairSystem
 
 __all__ = ["EXAMPLES", "Example", "initial_vertices", "molecular_model", "run_molecular", "rigid_system",
-           "rigid_initial", "run_rigid", "Summary", "summarize", "compare_models", "EDGE", "A_PAIR", "G"]
+           "rigid_initial", "run_rigid", "Summary", "summarize", "compare_models", "EDGE", "A_PAIR", "G",
+           "MolecularRun", "RigidRun"]
 
 EDGE = float(np.sqrt(5.0 / 3.0))
 A_PAIR = 1.0e6
@@ -95,13 +109,34 @@ def molecular_model(masses=(1.0, 1.0, 1.0, 1.0), A: float = A_PAIR, g: float = G
     return PairSystem(masses, A * (-1 / r**3 + 1 / r**5), r, weights=[0.0, g, g, g], fixed=[(0, 2)])
 
 
+class MolecularRun(NamedTuple):
+    """A run of the molecular model: unpacks as ``(model, result)``; :attr:`summary` is what the paper reports
+    (fall, P1 drift …) and ``result`` carries the energy drift and the solver's counts."""
+
+    model: PairSystem
+    result: DGResult
+
+    @property
+    def summary(self) -> Summary:
+        r = self.result
+        return summarize(r.t, r.x, r.fell, r.fall_time)
+
+
 def run_molecular(ex: Example, t_end: float = 110.0, *, dt: float = 1e-5, record_every: int = 5000,
-                  A: float = A_PAIR, g: float = G):
-    """The paper's run (``A``, ``g``: the pair-potential strength and gravity); returns (model, DGResult)."""
+                  A: float = A_PAIR, g: float = G, offset=(0.0, 0.0, 0.0), solver: str = "auto") -> MolecularRun:
+    """The paper's run (``A``, ``g``: the pair-potential strength and gravity; ``offset``: a horizontal
+    translation of the whole top, which changes nothing but the output's origin; ``solver``: see
+    :meth:`~lagrange.discrete.pair_dg.PairSystem.integrate`); returns :class:`MolecularRun`."""
+    off = np.asarray(offset, dtype=float)
+    if off.shape != (3,) or not np.all(np.isfinite(off)) or off[2] != 0.0:
+        raise InitialConditionError(f"offset={offset!r}: a finite horizontal translation (dx, dy, 0); the support "
+                                    "plane is z = 0")
     model = molecular_model(ex.masses, A=A, g=g)
     x0, v0 = initial_vertices(ex)
     steps = int(round(t_end / dt))
-    return model, model.integrate(x0, v0, dt=dt, steps=steps, record_every=record_every, fall_particles=[1, 2, 3])
+    res = model.integrate(x0 + off, v0, dt=dt, steps=steps, record_every=record_every, fall_particles=[1, 2, 3],
+                          solver=solver)
+    return MolecularRun(model, res)
 
 
 def rigid_system(masses=(1.0, 1.0, 1.0, 1.0)) -> tuple[System, tuple]:
@@ -150,14 +185,46 @@ def _vertex_function(system: System):
     return lambda q: np.array(f(list(q)), dtype=float)
 
 
+class RigidRun(NamedTuple):
+    """A run of the rigid model: unpacks as ``(system, trajectory, vertices)`` (vertices (k, 4, 3) at the output
+    times); :attr:`summary` says whether and when the top fell and how far P1 drifted."""
+
+    system: System
+    trajectory: object
+    vertices: np.ndarray
+
+    @property
+    def fall_time(self) -> float | None:
+        """The first fall event (a weighted vertex reaching z = 0), or None."""
+        return self._fall()[0]
+
+    def _fall(self):
+        sol = self.trajectory
+        events = [(float(te[0]), ye[0]) for te, ye in zip(sol.t_events or [], sol.y_events or []) if len(te)]
+        return min(events, key=lambda e: e[0]) if events else (None, None)
+
+    @property
+    def summary(self) -> Summary:
+        """The summary over the output times and, when the top fell, the state at the fall (the event), so
+        that ``summary.t[-1]`` is the fall time in both models."""
+        fall, y = self._fall()
+        t, verts = self.trajectory.t, self.vertices
+        if fall is not None and fall > t[-1]:
+            n = len(self.system.coordinates)
+            t = np.append(t, fall)
+            verts = np.concatenate([verts, _vertex_function(self.system)(y[:n])[None]])
+        return summarize(t, verts, fall is not None, fall)
+
+
 def run_rigid(ex: Example, t_end: float = 110.0, *, t_eval=None, rtol: float = 1e-10, atol: float = 1e-12,
-              backend: str = "python", params: Mapping | None = None, initial: Mapping | None = None, **options):
+              backend: str = "python", params: Mapping | None = None, initial: Mapping | None = None,
+              **options) -> RigidRun:
     """The rigid model over ``t_end`` with a terminal event when a weighted vertex reaches z = 0.
 
     ``params`` (``{"g": …}``) and ``initial`` (by coordinate name, ``"theta_dot"``…) override the paper's
     values; ``options`` go to :func:`~lagrange.integrate.run.simulate` (``method`` …: an adaptive one,
-    since the fall is an event). Returns (system, trajectory, vertices) with vertices (k, 4, 3) at the
-    output times."""
+    since the fall is an event). Returns :class:`RigidRun` ``(system, trajectory, vertices)`` with vertices
+    (k, 4, 3) at the output times and ``.summary`` (fall, fall time, P1 drift)."""
     system, coords = rigid_system(ex.masses)
     verts = _vertex_function(system)
     n = len(coords)
@@ -176,7 +243,7 @@ def run_rigid(ex: Example, t_end: float = 110.0, *, t_eval=None, rtol: float = 1
     sol = system.simulate(t_end, {**start, **(initial or {})}, {"g": G, **(params or {})}, t_eval=t_eval,
                           events=events, rtol=rtol, atol=atol, backend=backend, **options)
     V = np.array([verts(y[:n]) for y in sol.y])
-    return system, sol, V
+    return RigidRun(system, sol, V)
 
 
 @dataclass(frozen=True)
@@ -189,30 +256,49 @@ class Summary:
     zbar_range: tuple
     fell: bool
     fall_time: float | None
+    P1_drift: np.ndarray  # (2,) P1(t_end) − P1(0)
+    P1_drift_rate: np.ndarray  # (2,) least-squares slope of P1(t): the mean velocity of the contact point
+
+    def report(self) -> list[str]:
+        """The lines the CLI prints: fall (with its definition) and P1's drift."""
+        fall = (f"the top falls at t = {self.fall_time:.6g} (a weighted vertex reaches the plane z = 0)"
+                if self.fell else f"the top does not fall by t = {self.t[-1]:.6g} (no weighted vertex reaches z = 0)")
+        dx, dy = self.P1_drift
+        ux, uy = self.P1_drift_rate
+        return [fall, f"P1 drift: ({dx:+.6f}, {dy:+.6f}), |{np.hypot(dx, dy):.6f}| over the run; mean velocity "
+                      f"({ux:+.3e}, {uy:+.3e}) per unit time"]
 
 
 def summarize(t, vertices, fell: bool, fall_time: float | None) -> Summary:
-    """Summary of vertex positions (k, 4, 3) at times t."""
+    """Summary of vertex positions (k, 4, 3) at times t (k ≥ 1): P1's path and drift, Pbar's path and height
+    range, the fall (see the module's definitions)."""
+    t = np.asarray(t, dtype=float)
     P1 = vertices[:, 0, :2]
     Pbar = vertices.mean(axis=1)
-    return Summary(np.asarray(t), P1, Pbar, (float(Pbar[:, 2].min()), float(Pbar[:, 2].max())), fell, fall_time)
+    drift = P1[-1] - P1[0]
+    if len(t) > 1 and np.ptp(t) > 0:
+        tc = t - t.mean()
+        rate = (tc @ (P1 - P1.mean(axis=0))) / (tc @ tc)
+    else:
+        rate = np.zeros(2)
+    return Summary(t, P1, Pbar, (float(Pbar[:, 2].min()), float(Pbar[:, 2].max())), fell, fall_time, drift, rate)
 
 
 def compare_models(ex: Example, t_end: float, *, dt: float = 1e-5, record_every: int = 5000) -> Mapping:
     """Run both models and report the largest differences of P1 and Pbar over the common output times."""
-    model, mol = run_molecular(ex, t_end, dt=dt, record_every=record_every)
-    ms = summarize(mol.t, mol.x, mol.fell, mol.fall_time)
-    _, sol, Vr = run_rigid(ex, float(mol.t[-1]), t_eval=mol.t)
-    rs = summarize(sol.t, Vr, bool(sol.t_events and any(len(e) for e in sol.t_events)),
-                   next((float(e[0]) for e in sol.t_events if len(e)), None))
+    run = run_molecular(ex, t_end, dt=dt, record_every=record_every)
+    mol = run.result
+    ms = run.summary
+    rigid = run_rigid(ex, float(mol.t[-1]), t_eval=mol.t)
+    sol = rigid.trajectory
+    rs = rigid.summary
     k = min(len(ms.t), len(rs.t))
-    E = model.energy(mol.x, mol.v)
     return {
         "example": ex.number,
         "molecular": ms,
         "rigid": rs,
         "max_P1_difference": float(np.max(np.linalg.norm(ms.P1[:k] - rs.P1[:k], axis=1))),
         "max_Pbar_difference": float(np.max(np.linalg.norm(ms.Pbar[:k] - rs.Pbar[:k], axis=1))),
-        "molecular_energy_drift": float(np.ptp(E) / abs(E[0])),
+        "molecular_energy_drift": float(mol.energy_drift / abs(mol.energy[0])),
         "rigid_energy_error": float(sol.energy_error()),
     }
