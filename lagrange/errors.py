@@ -141,3 +141,19 @@ class AnalysisError(LagrangeError, ValueError):
 
 
 __all__ += ["AnalysisError"]
+
+
+class ExpressionTooLarge(LagrangeError, ValueError):
+    """A symbolic stage (declaration, expansion, differentiation, tidy-up, zero test, CSE, printing,
+    simplification) would exceed its size budget (:mod:`lagrange.budget`): the expression would multiply out
+    to too many terms, carries an exponent or a tower of exponentials beyond the limits, or has too many
+    nodes. ``stage`` names the stage, ``expression`` is the expression abbreviated; the message says which
+    limit was exceeded and by how much."""
+
+    def __init__(self, message: str, *, stage: str = "", expression: str = ""):
+        self.stage = stage
+        self.expression = expression
+        super().__init__(message)
+
+
+__all__ += ["ExpressionTooLarge"]
