@@ -241,10 +241,22 @@ def test_printable():
 
 # ------------------------------------------------------------------------------------------- slow fuzz
 
+RANDOM_CASES = 40
+
+
+def test_counts_documented():
+    """docs/guarantees.md quotes these numbers."""
+    doc = (Path(__file__).resolve().parents[1] / "docs" / "guarantees.md").read_text(encoding="utf-8")
+    assert f"**{len(fuzz.DEFAULT_CASES)} hostile derivations**" in doc
+    assert f"{RANDOM_CASES} random growth-prone expressions" in doc
+    for name in ("MAX_EXPONENT", "MAX_EXP_NESTING", "MAX_NODES", "EXPAND_NODES", "PRINT_NODES"):
+        assert f"`{name}` = {getattr(budget, name):,}" in doc, name
+
+
 @pytest.mark.slow
 def test_random_growth_prone_expressions_in_fresh_interpreters():
     """40 random expressions (powers with integer, rational, float and huge exponents, exp, exp(c·log),
     sin/cos/cosh/sqrt, products and sums, nested up to 4 deep), half as spec text and half built by sympy,
     each in a fresh interpreter under 60 CPU-s and 2 GiB."""
-    failures = [r for r in map(fuzz.run_case, fuzz.random_cases(40)) if not fuzz.passed(r)]
+    failures = [r for r in map(fuzz.run_case, fuzz.random_cases(RANDOM_CASES)) if not fuzz.passed(r)]
     assert not failures, failures
