@@ -33,7 +33,7 @@ limit                   value      applies to
 >>> import sympy as sp
 >>> x, y = sp.symbols("x y")
 >>> expansion_estimate((x + y + 1)**3)
-(10, 60)
+(10, 70)
 >>> max_exponent(sp.exp(10**30*sp.log(x)))
 1e+30
 >>> exp_nesting(sp.exp(sp.exp(x)) + sp.cosh(x))
