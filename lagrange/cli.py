@@ -256,7 +256,7 @@ def _simulate(args) -> int:
         options["inputs"] = inputs
     with heartbeat(f"integrating {label} to t = {float(t_end):g} with {options['method']}"), _partial_csv(args):
         sol = spec.system.simulate(float(t_end), initial, params, **options)
-    print(f"{spec.label}: {spec.system!r}")
+    print(f"{_printable(spec.label)}: {spec.system!r}")
     print(f"method {sol.method}, {sol.nfev} right-hand-side evaluations, {len(sol.t)} output points")
     tol = (f"step {options['step']:g}" if options["method"] in FIXED_STEP
            else f"rtol {options.get('rtol', 1e-9):g}, atol {options.get('atol', 1e-11):g}")
@@ -866,6 +866,12 @@ def _silence_stdout() -> None:
         pass
 
 
+def _printable(value) -> str:
+    from .printing import printable
+
+    return printable(str(value), keep="\n")
+
+
 def main(argv: list[str] | None = None) -> int:
     """Run the ``lagrange`` command; returns the exit status (0 ok, 1 a check failed, 2 bad input,
     3 internal error, 130 interrupted by Ctrl-C, 141 the output pipe was closed)."""
@@ -879,11 +885,11 @@ def main(argv: list[str] | None = None) -> int:
     except BrokenPipeError:  # `lagrange simulate ex3.4 | head -2`: the reader is gone, stop quietly
         _silence_stdout()
         return 141
-    except LagrangeError as exc:
-        print(f"lagrange: error: {exc}", file=sys.stderr)
+    except LagrangeError as exc:  # messages quote user strings: printed without their control characters
+        print(f"lagrange: error: {_printable(exc)}", file=sys.stderr)
         return 2
     except OSError as exc:  # a file that cannot be read or written (checked up front where possible)
-        print(f"lagrange: error: {exc}", file=sys.stderr)
+        print(f"lagrange: error: {_printable(exc)}", file=sys.stderr)
         return 2
     except KeyboardInterrupt as exc:  # Ctrl-C: one line, exit 130 (simulate has written a partial --csv)
         print(f"lagrange: {getattr(exc, 'cli_message', 'interrupted')}", file=sys.stderr)
@@ -891,7 +897,7 @@ def main(argv: list[str] | None = None) -> int:
     except Exception as exc:  # noqa: BLE001 - one line, never a traceback, unless debugging
         if os.environ.get("LAGRANGE_DEBUG"):
             raise
-        print(f"lagrange: internal error: {type(exc).__name__}: {exc} (set LAGRANGE_DEBUG=1 for details)",
+        print(f"lagrange: internal error: {type(exc).__name__}: {_printable(exc)} (set LAGRANGE_DEBUG=1 for details)",
               file=sys.stderr)
         return 3
 

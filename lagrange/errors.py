@@ -156,6 +156,9 @@ class CacheIntegrityWarning(LagrangeWarning):
     ignored and rebuilt, never loaded. Issued once per process."""
 
 
+__all__ += ["CacheError", "CacheIntegrityWarning"]
+
+
 class IntegrationInterrupted(KeyboardInterrupt):
     """A run stopped by Ctrl-C (SIGINT): every integration loop raises it within about a second of the signal.
 
@@ -174,6 +177,8 @@ class IntegrationInterrupted(KeyboardInterrupt):
 
 
 __all__ += ["IntegrationInterrupted"]
+
+
 class MethodError(LagrangeError, TypeError):
     """An integration method (or loop, friction or stabilization treatment) that does not exist, or that does
     not support what the run asks for (events, constraints, friction switches, inputs, ...): the message names
@@ -184,3 +189,19 @@ class MethodError(LagrangeError, TypeError):
 class OptionError(LagrangeError, ValueError):
     """A value of a simulate option (or of a spec's ``[simulate]`` table) is out of range: the message names
     the option, the value and the limit (:mod:`lagrange.integrate.options`)."""
+
+
+class ExpressionTooLarge(LagrangeError, ValueError):
+    """A symbolic stage (declaration, expansion, differentiation, tidy-up, zero test, CSE, printing,
+    simplification) would exceed its size budget (:mod:`lagrange.budget`): the expression would multiply out
+    to too many terms, carries an exponent or a tower of exponentials beyond the limits, or has too many
+    nodes. ``stage`` names the stage, ``expression`` is the expression abbreviated; the message says which
+    limit was exceeded and by how much."""
+
+    def __init__(self, message: str, *, stage: str = "", expression: str = ""):
+        self.stage = stage
+        self.expression = expression
+        super().__init__(message)
+
+
+__all__ += ["ExpressionTooLarge"]

@@ -10,6 +10,8 @@ code never see either.
 
 from __future__ import annotations
 
+import unicodedata
+
 import sympy as sp
 from sympy.printing.latex import LatexPrinter
 from sympy.printing.pretty.pretty import PrettyPrinter
@@ -17,12 +19,13 @@ from sympy.printing.pretty.pretty_symbology import pretty_symbol
 from sympy.printing.pretty.stringpict import prettyForm, stringPict
 from sympy.simplify.fu import TR5, TR6, TR10i
 
+from .budget import PRINT_NODES, check, fits
 from .conventions import t
 from .errors import SymbolicTimeoutError
 from .simplification import run_bounded
 
 __all__ = ["WIDTH", "format_equations", "format_expression", "format_momenta", "display_equations", "tidy_trig",
-           "terminal_width", "latex_equations", "latex", "pretty"]
+           "terminal_width", "latex_equations", "latex", "pretty", "printable"]
 
 #: Default width of text output (columns).
 WIDTH = 100
@@ -79,13 +82,34 @@ def pretty(expr) -> str:
     return _DotPretty({"use_unicode": True, "wrap_line": False}).doprint(expr)
 
 
+# ------------------------------------------------------------------------------------------ user text
+
+_UNPRINTABLE = ("Cc", "Cf", "Zl", "Zp", "Cs", "Co", "Cn")
+
+
+def printable(text: str, *, keep: str = "") -> str:
+    r"""``text`` with every control or format character (terminal escapes such as ``\x1b[2J``, carriage
+    returns, bidirectional overrides such as U+202E) written as its Python escape, except those in ``keep``
+    (e.g. ``"\n"`` for a multi-line message). Every user string the CLI prints (a system's name, a spec's
+    label, an error message quoting a spec) goes through it, so a spec cannot drive the terminal.
+
+    >>> printable("pendulum\x1b[2J")
+    'pendulum\\x1b[2J'
+    """
+    text = str(text)
+    if text.isprintable():
+        return text
+    return "".join(ch if ch in keep or unicodedata.category(ch) not in _UNPRINTABLE
+                   else ch.encode("unicode_escape").decode("ascii") for ch in text)
+
+
 # ---------------------------------------------------------------------------------------- trigonometry
 
 def _pythagoras(node):
     """``node`` with sin² u → 1 − cos² u or cos² u → 1 − sin² u (expanded), whichever is shortest, if
     shorter than ``node``; only sums holding a sin² or cos² are tried."""
     if not node.is_Add or not any(p.exp.is_Integer and p.exp >= 2 and isinstance(p.base, (sp.sin, sp.cos))
-                                  for p in node.atoms(sp.Pow)):
+                                  for p in node.atoms(sp.Pow)) or not fits(node):
         return node
     best, cost = node, sp.count_ops(node)
     for rule in (TR5, TR6):
@@ -178,6 +202,7 @@ def format_expression(expr, width: int = WIDTH, indent: str = "") -> str:
     """
     printer = _DotPretty({"use_unicode": True, "wrap_line": False})
     expr = sp.sympify(expr)
+    check(expr, stage="printing", what="the equation", max_nodes=PRINT_NODES)
     sides = [expr.lhs, expr.rhs] if isinstance(expr, sp.Equality) else [expr]
     room = width - len(indent) - len(_INDENT) - 2
     pieces = []
@@ -210,7 +235,7 @@ def _header(system, width: int) -> str:
 
     from .model.coordinates import coordinate_name
 
-    name = system.name or "system"
+    name = printable(system.name or "system")
     coords = ", ".join(coordinate_name(q) for q in system.coordinates)
     n, cons = len(system.coordinates), system.constraints
     if not cons:
@@ -252,6 +277,9 @@ def format_momenta(system, width: int = WIDTH) -> str:
 
 def latex_equations(system) -> str:
     """The equations (:func:`display_equations`) as one LaTeX ``aligned`` block (for Jupyter)."""
-    rows = [rf"{latex(eq.lhs)} &= {latex(eq.rhs)}" for eq in display_equations(system)]
+    eqs = display_equations(system)
+    for eq in eqs:
+        check(eq, stage="printing", what="the equation", max_nodes=PRINT_NODES)
+    rows = [rf"{latex(eq.lhs)} &= {latex(eq.rhs)}" for eq in eqs]
     body = r" \\ ".join(rows)
     return rf"$\displaystyle \begin{{aligned}} {body} \end{{aligned}}$"

@@ -11,6 +11,11 @@ process to process. lagrange therefore never calls these functions directly. It 
 2. in the main thread of a POSIX process, limits each attempt to :data:`SECONDS` of wall time
    (``$LAGRANGE_SYMPY_SECONDS``, default 10) and retries with the next seed, up to :data:`ATTEMPTS` seeds.
 
+Before any of this, the size budget of :mod:`lagrange.budget` applies: a simplification or a zero test whose
+expansion would exceed it is skipped (unproven), the numeric probe skips points where an exponential or a
+power would take a number of unbounded size, and a solve of too large an equation raises
+:class:`~lagrange.errors.ExpressionTooLarge`.
+
 A simplification that does not finish is skipped (the expression is used as it is); a zero test that
 cannot be proven answers ``False`` (not known to vanish); a solve that does not finish raises
 :class:`~lagrange.errors.SymbolicTimeoutError`. Nothing is ever silently wrong, at worst less tidy.
@@ -32,6 +37,7 @@ import sympy as sp
 from sympy.core.function import AppliedUndef
 from sympy.core.random import rng as _sympy_rng
 
+from .budget import MAX_NODES, check, fits
 from .errors import SymbolicTimeoutError
 from .safe_sympify import sympify as _sympify
 
@@ -106,25 +112,34 @@ def _or_input(fn, expr, what):
 
 
 def simplify(expr, *, limit: int | None = None):
-    """``sympy.simplify``, bounded: the input is returned unchanged above ``limit`` operations or on timeout."""
+    """``sympy.simplify``, bounded: the input is returned unchanged above ``limit`` operations, when expanding
+    it would exceed the size budget (:func:`lagrange.budget.fits`), or on timeout."""
     expr = _sympify(expr)
     if limit is not None and sp.count_ops(expr) > limit:
+        return expr
+    if not fits(expr):
         return expr
     return _or_input(sp.simplify, expr, "simplify")
 
 
 def trigsimp(expr):
-    """``sympy.trigsimp``, bounded (the input unchanged on timeout)."""
-    return _or_input(sp.trigsimp, _sympify(expr), "trigsimp")
+    """``sympy.trigsimp``, bounded (the input unchanged above the size budget or on timeout)."""
+    expr = _sympify(expr)
+    return _or_input(sp.trigsimp, expr, "trigsimp") if fits(expr) else expr
 
 
 def factor(expr):
-    """``sympy.factor``, bounded (the input unchanged on timeout)."""
-    return _or_input(sp.factor, _sympify(expr), "factor")
+    """``sympy.factor``, bounded (the input unchanged above the size budget or on timeout)."""
+    expr = _sympify(expr)
+    return _or_input(sp.factor, expr, "factor") if fits(expr) else expr
 
 
 def solve(*args, what: str = "solve", **kwargs):
-    """``sympy.solve``, bounded; raises :class:`SymbolicTimeoutError` naming ``what`` on timeout."""
+    """``sympy.solve``, bounded; raises :class:`SymbolicTimeoutError` naming ``what`` on timeout and
+    :class:`~lagrange.errors.ExpressionTooLarge` when an equation exceeds the size budget."""
+    for a in args[:1]:
+        for e in (a if isinstance(a, (list, tuple, sp.MatrixBase)) else [a]):
+            check(e, stage=what, what="the equation", max_expanded=MAX_NODES)
     return run_bounded(sp.solve, *args, what=what, **kwargs)
 
 
@@ -160,8 +175,12 @@ def _probe(expr) -> bool | None:
     symbols = sorted(e.free_symbols, key=sp.default_sort_key)
     rnd = random.Random(20456)
     zero_points = 0
+    hazards = _hazards(e)
     for _ in range(6 * _PROBES):
-        at = e.xreplace({s: _sample(s, rnd) for s in symbols})
+        point = {s: _sample(s, rnd) for s in symbols}
+        if not _safe_at(hazards, point):
+            continue
+        at = e.xreplace(point)
         try:
             lo, hi = complex(at.evalf(_DIGITS)), complex(at.evalf(_DIGITS + 20))
         except (TypeError, ValueError, ZeroDivisionError, OverflowError):
@@ -174,6 +193,42 @@ def _probe(expr) -> bool | None:
         if zero_points == _PROBES:
             return False
     return None
+
+
+#: an exponential whose argument, or a power whose exponent, exceeds this in magnitude at a point is not
+#: evaluated there: arbitrary-precision arithmetic would work with numbers of unbounded size (exp(exp(x))
+#: at x = 10 has 10⁹⁵¹⁰ digits before the decimal point; x**(10**30) at x = 13/10 is exact)
+_EVALUATION_LIMIT = 10_000
+
+
+def _hazards(e) -> list:
+    """The exponentials and the powers of ``e`` whose size depends on a value, inner ones first."""
+    from .budget import _EXPONENTIAL, _postorder
+
+    out = []
+    for node in _postorder(e):
+        if isinstance(node, _EXPONENTIAL) or (node.is_Pow and not (node.exp.is_Number
+                                                                   and abs(node.exp) <= _EVALUATION_LIMIT)):
+            out.append(node)
+    return out
+
+
+def _safe_at(hazards: list, point: dict) -> bool:
+    """True when every argument of an exponential and every exponent of ``hazards`` stays within
+    :data:`_EVALUATION_LIMIT` at ``point`` (checked inner first, so each check is itself bounded)."""
+    for node in hazards:
+        arg = node.args[0] if not node.is_Pow else node.exp
+        if arg.is_Number:
+            if abs(arg) > _EVALUATION_LIMIT:
+                return False
+            continue
+        try:
+            v = complex(arg.xreplace(point).evalf(15))
+        except (TypeError, ValueError, ZeroDivisionError, OverflowError):
+            return False
+        if not abs(v) <= _EVALUATION_LIMIT:  # also NaN
+            return False
+    return True
 
 
 def _trig_polynomial_zero(expr) -> bool:
@@ -219,6 +274,8 @@ def is_zero(expr, *, limit: int = 300) -> bool:
         return False
     big = sp.count_ops(expr) > limit
     if big and expr.free_symbols:  # too big to prove anything about within bounded time
+        return False
+    if not fits(expr):  # expanding would exceed the size budget (lagrange.budget): unproven
         return False
     if sp.expand(expr) == 0:
         return True

@@ -14,6 +14,7 @@ from dataclasses import dataclass
 import sympy as sp
 from sympy.simplify import cse_opts
 
+from ..budget import check
 from ..conventions import t
 from ..derive.equations import Equations
 from ..symengine_bridge import FAILURES, Restorer, carries, symengine
@@ -121,11 +122,19 @@ def _fuse(eqs: Equations, extra: tuple, constraint_rhs) -> tuple[FusedExpression
 
 
 def _cse(exprs: list) -> tuple[list, list]:
-    """``sympy.cse`` of ``exprs`` with temporaries ``c0, c1, …`` (real). Small sets (at most
-    :data:`FACTOR_TERMS_LIMIT` nodes) get sympy's ``factor_terms`` pre-pass; larger ones are handed to
+    """``sympy.cse`` of ``exprs`` with temporaries ``c0, c1, …`` (real); more than
+    :data:`lagrange.budget.MAX_NODES` distinct nodes raise :class:`~lagrange.errors.ExpressionTooLarge`.
+    Small sets (at most :data:`FACTOR_TERMS_LIMIT` nodes) get sympy's ``factor_terms`` pre-pass;
+    larger ones are handed to
     symengine's CSE when installed and ``exprs`` are what it carries back exactly
     (:func:`lagrange.symengine_bridge.carries`), else to sympy's with its negation pre-pass only."""
-    size = sum(1 for e in exprs for _ in sp.preorder_traversal(e))
+    check(sp.Tuple(*exprs), stage="common-subexpression elimination", what="the equations of motion")
+    size = 0
+    for e in exprs:  # tree size (shared subtrees counted each time), counted only up to the limit
+        for _ in sp.preorder_traversal(e):
+            size += 1
+            if size > FACTOR_TERMS_LIMIT:
+                break
     if size <= FACTOR_TERMS_LIMIT:
         return sp.cse(exprs, symbols=sp.numbered_symbols("c", real=True), optimizations="basic")
     fast = _symengine_cse(exprs)

@@ -21,6 +21,7 @@ from __future__ import annotations
 import sympy as sp
 from sympy.simplify.fu import TR2i, TR10i
 
+from ..budget import check, fits
 from ..conventions import POWER_FUNCTION_SIGN, RAYLEIGH_SIGN, t
 from ..model.coordinates import (
     acceleration_symbol,
@@ -30,6 +31,7 @@ from ..model.coordinates import (
     velocity_symbol,
 )
 from ..model.inputs import is_input
+from ..safe_sympify import sympify as _sympify
 from ..simplification import is_zero
 from ..symengine_bridge import FAILURES, Restorer, carries, symengine
 from .equations import Equations
@@ -68,27 +70,35 @@ def lagrange_equations(system) -> Equations:
     F = [_tidy_force(to_symbols(system.forces[c], coords)) for c in coords]
 
     dT_dqd, hessian, convectives = kinetic_derivatives(T, q, qd)
-    M = sp.zeros(n, n)
-    for i in range(n):
-        for j in range(i, n):
-            M[i, j] = M[j, i] = _tidy_force(hessian[i, j])
+    rows = [[sp.S.Zero] * n for _ in range(n)]  # a list, not sp.zeros: item assignment there costs O(n)
+    nonzero: list[list[int]] = [[] for _ in range(n)]  # the structurally nonzero columns of each row of M
+    for (i, j), h in sorted(hessian.items()):
+        h = _tidy_force(h)
+        if h != 0:
+            rows[i][j] = rows[j][i] = h
+            nonzero[i].append(j)
+            if j != i:
+                nonzero[j].append(i)
+    M = sp.ImmutableMatrix(rows)
     inertial = []
     forcing = []
-    potential_gradient = []
     dissipative = []
+    potential_gradient = gradient(V, q)
+    dP, dD = gradient(P, qd), gradient(D, qd)
     for i in range(n):
         convective = convectives[i]
-        inertial.append(sum((M[i, j] * qdd[j] for j in range(n)), sp.S.Zero) + convective)
-        dV = sp.diff(V, q[i])
-        potential_gradient.append(dV)
-        diss = POWER_FUNCTION_SIGN * sp.diff(P, qd[i]) + RAYLEIGH_SIGN * sp.diff(D, qd[i])
+        inertial.append(sp.Add(*(rows[i][j] * qdd[j] for j in sorted(nonzero[i]))) + convective)
+        dV = potential_gradient[i]
+        diss = POWER_FUNCTION_SIGN * dP[i] + RAYLEIGH_SIGN * dD[i]
         dissipative.append(diss)
         forcing.append(F[i] + diss - convective - dV)
+    for i in range(n):
+        check(forcing[i], stage="differentiation", what=f"the forcing term of {q[i]}")
 
     nonconservative = tuple(F[i] + dissipative[i] for i in range(n))
     L = T - V
-    jacobi = sum((v * d for v, d in zip(qd, dT_dqd)), sp.S.Zero) - L
-    jacobi_rate = -sp.diff(L, t) + sum((v * Q for v, Q in zip(qd, nonconservative)), sp.S.Zero)
+    jacobi = sp.Add(*(v * d for v, d in zip(qd, dT_dqd))) - L
+    jacobi_rate = -sp.diff(L, t) + sp.Add(*(v * Q for v, Q in zip(qd, nonconservative)))
     blocks = constraint_blocks(system.constraints, coords, q, qd) if system.constraints else {}
     if blocks:
         B, lam = blocks["reaction_matrix"], blocks["multipliers"]
@@ -108,7 +118,7 @@ def lagrange_equations(system) -> Equations:
         qd=qd,
         qdd=qdd,
         parameters=tuple(sorted(params, key=lambda s: s.name)),
-        mass_matrix=sp.ImmutableMatrix(M),
+        mass_matrix=M,
         forcing=sp.ImmutableMatrix(forcing),
         inertial=tuple(inertial),
         potential_gradient=tuple(potential_gradient),
@@ -129,7 +139,7 @@ def lagrange_equations(system) -> Equations:
 
 def kinetic_derivatives(T, q, qd) -> tuple[list, dict, list]:
     r"""The derivatives of T that Lagrange's equations need:
-    ``(∂T/∂q̇_r, {(r, j): ∂²T/∂q̇_r∂q̇_j for r ≤ j}, c_r)`` with the convective terms
+    ``(∂T/∂q̇_r, {(r, j): ∂²T/∂q̇_r∂q̇_j for r ≤ j, structural zeros left out}, c_r)`` with the convective terms
     :math:`c_r = \sum_j \frac{\partial^2 T}{\partial\dot q_r\partial q_j}\dot q_j
     + \frac{\partial^2 T}{\partial\dot q_r\partial t} - \frac{\partial T}{\partial q_r}`
     (``d/dt ∂T/∂q̇_r − ∂T/∂q_r`` without its ``M q̈`` part).
@@ -145,11 +155,45 @@ def kinetic_derivatives(T, q, qd) -> tuple[list, dict, list]:
     if fast is not None:
         return fast
     n = len(q)
-    dT = [sp.diff(T, v) for v in qd]
-    hessian = {(i, j): sp.diff(dT[i], qd[j]) for i in range(n) for j in range(i, n)}
-    conv = [sum((sp.diff(dT[i], q[j]) * qd[j] for j in range(n)), sp.S.Zero) + sp.diff(dT[i], t) - sp.diff(T, q[i])
-            for i in range(n)]
+    dT = gradient(T, qd)
+    dT_dq = gradient(T, q)
+    hessian, conv = {}, []
+    for i in range(n):
+        held = dT[i].free_symbols
+        for j in range(i, n):
+            if qd[j] in held:
+                hessian[i, j] = sp.diff(dT[i], qd[j])
+        conv.append(sp.Add(*(sp.diff(dT[i], q[j]) * qd[j] for j in range(n) if q[j] in held))
+                    + sp.diff(dT[i], t) - dT_dq[i])
     return dT, hessian, conv
+
+
+def gradient(e, variables) -> list:
+    """``[∂e/∂v for v in variables]``, the same expressions as ``sympy.diff``, in time linear in the number of
+    variables when each summand of ``e`` holds a few of them (a chain, uncoupled oscillators), where
+    differentiating the whole of ``e`` once per variable is quadratic: a sum is differentiated summand by
+    summand, each by the variables it holds only (the others give zero), and a constant factor of a sum
+    (``k*(a**2 + b**2)/2``) is kept outside, as sympy's sum and product rules do."""
+    index = {v: i for i, v in enumerate(variables)}
+    parts = _sparse_gradient(_sympify(e), variables, index)
+    return [parts.get(i, sp.S.Zero) for i in range(len(variables))]
+
+
+def _sparse_gradient(e, variables, index) -> dict:
+    """``{i: ∂e/∂variables[i]}`` for the derivatives that are not structurally zero."""
+    if e.is_Add:
+        collected: dict = {}
+        for term in e.args:
+            for i, d in _sparse_gradient(term, variables, index).items():
+                collected.setdefault(i, []).append(d)
+        return {i: sp.Add(*ds) for i, ds in collected.items()}
+    if e.is_Mul:
+        sums = [f for f in e.args if f.is_Add]
+        if len(sums) == 1:
+            rest = sp.Mul(*[f for f in e.args if f is not sums[0]])
+            if not any(s in index for s in rest.free_symbols):
+                return {i: rest * d for i, d in _sparse_gradient(sums[0], variables, index).items()}
+    return {index[s]: sp.diff(e, s) for s in e.free_symbols if s in index}
 
 
 #: kinetic energies smaller than this (expression nodes) are differentiated by sympy even when symengine is
@@ -176,9 +220,13 @@ def _symengine_derivatives(T, q, qd):
         Ts = se.sympify(T)
         qs, qds, ts = [se.Symbol(v.name) for v in q], [se.Symbol(v.name) for v in qd], se.Symbol(t.name)
         dT = [Ts.diff(v) for v in qds]
-        hessian = {(i, j): to_sympy(dT[i].diff(qds[j])) for i in range(n) for j in range(i, n)}
-        conv = [to_sympy(sum((dT[i].diff(qs[j]) * qds[j] for j in range(n)), se.Integer(0)) + dT[i].diff(ts)
-                         - Ts.diff(qs[i])) for i in range(n)]
+        # derivatives by symbols a ∂T/∂q̇ does not hold are zero: skipped (linear in n for sparse M)
+        where_qd, where_q = {v: j for j, v in enumerate(qds)}, {v: j for j, v in enumerate(qs)}
+        held = [d.free_symbols for d in dT]
+        hessian = {(i, j): to_sympy(dT[i].diff(qds[j])) for i in range(n)
+                   for j in sorted(where_qd[v] for v in held[i] if v in where_qd) if j >= i}
+        conv = [to_sympy(sum((dT[i].diff(qs[j]) * qds[j] for j in sorted(where_q[v] for v in held[i] if v in where_q)),
+                             se.Integer(0)) + dT[i].diff(ts) - Ts.diff(qs[i])) for i in range(n)]
         return [to_sympy(e) for e in dT], hessian, conv
     except FAILURES:
         return None
@@ -236,7 +284,7 @@ def _tidy_kinetic(T):
     energies of the book's problems that reach this step they give exactly ``trigsimp``'s result, in a
     fourteenth of the time (0.3 s against 4.5 s in all; 34 ms of a double pendulum's first result).
     """
-    if sp.count_ops(T) > _KINETIC_LIMIT:
+    if sp.count_ops(T) > _KINETIC_LIMIT or not fits(T):
         return T
     e = _pythagoras(T)
     if e.has(sp.sin, sp.cos) and sp.count_ops(e) <= _TRIGSIMP_LIMIT:
@@ -252,7 +300,7 @@ def _tidy_force(F):
     rotating with t), accepted unless it grows the expression. Skipped when expanding would give more than
     :data:`_EXPAND_LIMIT` terms (:func:`_expanded_terms`): the result would be rejected as longer anyway, and
     expanding a bicycle's mass matrix that way took half of its derivation."""
-    if F == 0 or sp.count_ops(F) > _KINETIC_LIMIT or _expanded_terms(F) > _EXPAND_LIMIT:
+    if F == 0 or sp.count_ops(F) > _KINETIC_LIMIT or _expanded_terms(F) > _EXPAND_LIMIT or not fits(F):
         return F
     e = _pythagoras(F)
     return e if sp.count_ops(e) <= sp.count_ops(F) else F
@@ -260,11 +308,13 @@ def _tidy_force(F):
 
 def _tidy(expr, collect_in=()):
     """Light, bounded tidying for display: collect in velocities, factor common terms."""
-    if expr == 0 or sp.count_ops(expr) > _TIDY_LIMIT:
+    if expr == 0 or sp.count_ops(expr) > _TIDY_LIMIT or not fits(expr):
         return expr
     e = sp.expand(expr)
+    held = e.free_symbols
+    collect_in = [v for v in collect_in if v in held]  # the velocities present: linear in n, not quadratic
     if collect_in:
-        e = sp.collect(e, list(collect_in))
+        e = sp.collect(e, collect_in)
     return sp.factor_terms(e)
 
 
@@ -276,18 +326,24 @@ def book_form(eqs: Equations) -> list[sp.Eq]:
     """
     out = []
     n = eqs.n
+    nonzero = _nonzero_columns(eqs.mass_matrix)
     for i in range(n):
-        acc = sum(
-            (_tidy(eqs.mass_matrix[i, j]) * eqs.qdd[j] for j in range(n) if eqs.mass_matrix[i, j] != 0),
-            sp.S.Zero,
-        )
-        rest = eqs.inertial[i] - sum((eqs.mass_matrix[i, j] * eqs.qdd[j] for j in range(n)), sp.S.Zero)
+        acc = sp.Add(*(_tidy(eqs.mass_matrix[i, j]) * eqs.qdd[j] for j in nonzero[i]))
+        rest = eqs.inertial[i] - sp.Add(*(eqs.mass_matrix[i, j] * eqs.qdd[j] for j in nonzero[i]))
         lhs = acc + _tidy(rest + eqs.potential_gradient[i], eqs.qd)
         rhs = _tidy(eqs.nonconservative[i], eqs.qd)
         rhs += sum((_tidy(eqs.reaction_matrix[i, k]) * lam for k, lam in enumerate(eqs.multipliers)), sp.S.Zero)
         rhs = rhs.xreplace(_display_signs(eqs))
         out.append(sp.Eq(to_functions(lhs, eqs.coordinates), to_functions(rhs, eqs.coordinates)))
     return out + constraint_equations(eqs)
+
+
+def _nonzero_columns(M) -> list[list[int]]:
+    """The structurally nonzero columns of each row of ``M`` (one pass over its entries)."""
+    rows: list[list[int]] = [[] for _ in range(M.rows)]
+    for (i, j), _ in sorted(M.todok().items()):
+        rows[i].append(j)
+    return rows
 
 
 def _display_signs(eqs: Equations) -> dict:
@@ -335,9 +391,10 @@ def ignorable_coordinates(system) -> dict:
     """
     eqs = system.derived
     L = eqs.kinetic - eqs.potential
+    dL_dq = gradient(L, eqs.q)  # linear in the number of coordinates for local terms
     out = {}
     for i, c in enumerate(eqs.coordinates):
         constrained = any(not is_zero(eqs.reaction_matrix[i, k]) for k in range(eqs.m))
-        if not constrained and is_zero(sp.diff(L, eqs.q[i])) and is_zero(eqs.nonconservative[i]):
+        if not constrained and is_zero(dL_dq[i]) and is_zero(eqs.nonconservative[i]):
             out[c] = to_functions(sp.diff(L, eqs.qd[i]), eqs.coordinates)
     return out

@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import sympy as sp
 
+from ..budget import EXPAND_NODES, check
 from ..conventions import t
 from ..model.coordinates import to_symbols
 
@@ -40,7 +41,9 @@ def constraint_blocks(specs, coords, q, qd) -> dict:
         g = to_symbols(spec.velocity, coords)
         for j in range(n):
             A[k, j] = sp.diff(g, qd[j])
-        bk = sp.expand(g - sum((A[k, j] * qd[j] for j in range(n)), sp.S.Zero))
+        bk = g - sp.Add(*(A[k, j] * qd[j] for j in range(n)))
+        check(bk, stage="constraint blocks (expansion)", what=f"constraint {spec.name}", max_expanded=EXPAND_NODES)
+        bk = sp.expand(bk)
         b.append(bk)
         # d/dt g = A q̈ + (∂g/∂q) q̇ + ∂g/∂t ; with g linear in q̇, ∂g/∂q contains q̇ (that is Ȧ q̇ + ḃ)
         rate = sum((sp.diff(g, q[j]) * qd[j] for j in range(n)), sp.S.Zero) + sp.diff(g, t)

@@ -18,6 +18,7 @@ from typing import TYPE_CHECKING, Any, NamedTuple
 import sympy as sp
 from sympy.core.function import AppliedUndef
 
+from ..budget import check_declared
 from ..conventions import VELOCITY_SUFFIX, t
 from ..conventions import t as _TIME
 from ..errors import DeclarationError
@@ -187,7 +188,9 @@ class System:
             presc[key] = val
 
         def prep(expr, what):
-            e = evaluate_integrals(_sym(expr, what, problems), what, problems)
+            e = _sym(expr, what, problems)
+            check_declared(e, what=what)  # before anything works on it (lagrange.budget)
+            e = evaluate_integrals(e, what, problems)
             if presc:
                 e = e.subs(presc).doit()
             return e
@@ -212,6 +215,8 @@ class System:
             raw_forces = _substitute_forces(forces, presc)
         F = generalized_forces(raw_forces, coords, problems) if coords else {}
         F = {q: evaluate_integrals(f, f"F_{coordinate_name(q)}", problems) for q, f in F.items()}
+        for q, f in F.items():
+            check_declared(f, what=f"the generalized force F_{coordinate_name(q)}")
 
         specs = ()
         constraints = list(constraints or ()) + [c for b in bodies for c in getattr(b, "constraints", tuple)()]
@@ -219,6 +224,7 @@ class System:
             raw = [_substitute_constraint(c, presc) for c in constraints] if presc else list(constraints)
             specs = normalize_constraints(raw, coords, problems)
             for spec in specs:
+                check_declared(spec.velocity, what=f"constraint {spec.name}")
                 if spec.velocity.has(sp.Integral):
                     problems.append(f"constraint {spec.name} contains an integral: give it in closed form")
                 self._check_expr(spec.name, spec.velocity, coords, presc, 1, problems, parameters)

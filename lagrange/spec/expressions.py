@@ -39,10 +39,11 @@ from collections.abc import Mapping
 
 import sympy as sp
 
+from ..budget import MAX_EXP_NESTING, abbreviate, exp_nesting
 from ..errors import SpecError
 
 __all__ = ["parse_expression", "FUNCTIONS", "MAX_LENGTH", "MAX_DEPTH", "MAX_NODES", "MAX_EXPONENT",
-           "MAX_MAGNITUDE", "MAX_TERMS"]
+           "MAX_MAGNITUDE", "MAX_TERMS", "MAX_EXP_NESTING"]
 
 MAX_LENGTH = 5000
 MAX_DEPTH = 30
@@ -131,6 +132,10 @@ def parse_expression(text: str | int | float, names: Mapping[str, sp.Basic], *,
     return expr
 
 
+def _abbreviate(e: sp.Expr) -> str:
+    return abbreviate(e, 60)
+
+
 def _short(number: sp.Rational) -> str:
     """A rational in three significant digits (``str`` of a 10,000-digit integer raises in Python 3.11+)."""
     return str(number.evalf(3))
@@ -145,10 +150,11 @@ def _expanded_terms(e: sp.Basic, limit: int) -> int:
         for a in e.args:
             out = min(limit + 1, out * _expanded_terms(a, limit))
         return out
-    if isinstance(e, sp.Pow) and e.exp.is_Integer:
-        k = _expanded_terms(e.base, limit)
-        n = abs(int(e.exp))
-        return 1 if k == 1 else min(limit + 1, math.comb(n + k - 1, k - 1))
+    if isinstance(e, sp.Pow) and e.exp.is_Number:  # integer, rational and float exponents alike:
+        k = _expanded_terms(e.base, limit)  # (a + b)**(n + f) expands as (a + b)**n, times (a + b)**f
+        n = int(abs(e.exp)) if abs(e.exp) <= MAX_EXPONENT else MAX_EXPONENT + 1
+        if k > 1 and n >= 1:
+            return min(limit + 1, math.comb(n + k - 1, k - 1))
     for a in e.args:  # functions and other powers: their arguments are expanded in place
         if _expanded_terms(a, limit) > limit:
             return limit + 1
@@ -248,8 +254,9 @@ class _Builder:
         return self.exponents(a**b)
 
     def exponents(self, result: sp.Expr) -> sp.Expr:
-        """sympy folds ``(x**a)**b`` and ``x**a*x**b``: the combined exponent must obey the limit too."""
-        for part in (result, *(result.args if isinstance(result, sp.Mul) else ())):
+        """sympy folds ``(x**a)**b`` and ``x**a*x**b``, and rewrites ``exp(c*log(x))`` as ``x**c``: the
+        combined exponent must obey the limit too."""
+        for part in (result, *(result.args if isinstance(result, (sp.Mul, sp.Function)) else ())):
             if isinstance(part, sp.Pow) and part.exp.is_number and abs(self.real_value(part.exp, "exponent")) \
                     > MAX_EXPONENT:
                 self.error(f"the combined exponent {part.exp} exceeds the limit {MAX_EXPONENT}")
@@ -267,7 +274,25 @@ class _Builder:
         if len(node.args) != arity:
             self.error(f"{name} takes {arity} argument{'s' if arity > 1 else ''}, got {len(node.args)}")
         args = [self.build(a, d) for a in node.args]
-        return self.checked(fn(*args))
+        if fn in (sp.exp, sp.sinh, sp.cosh, sp.tanh):
+            self.exp_argument(name, args[0])
+        return self.checked(self.exponents(fn(*args)))
+
+    def exp_argument(self, name: str, arg: sp.Expr) -> None:
+        """Checked before sympy sees ``exp(arg)``: sympy rewrites ``exp(c*log(x))`` as ``x**c`` (and would
+        compute ``2**(10**30)`` for ``exp(10**30*log(2))``), so the factor of a log obeys the exponent limit;
+        and a tower of exponentials deeper than :data:`MAX_EXP_NESTING` overflows any number format."""
+        for term in sp.Add.make_args(arg):
+            factors = sp.Mul.make_args(term)
+            if any(isinstance(f, sp.log) for f in factors):
+                c = sp.Mul(*[f for f in factors if not isinstance(f, sp.log) and f.is_number])
+                if abs(self.real_value(c, "factor of a log")) > MAX_EXPONENT:
+                    self.error(f"{name}({_abbreviate(arg)}) raises to the power {_short(c) if c.is_Rational else c}, "
+                               f"which exceeds the exponent limit {MAX_EXPONENT}")
+        depth = exp_nesting(arg) + 1
+        if depth > MAX_EXP_NESTING:
+            self.error(f"{name}({_abbreviate(arg)}) nests exponential functions {depth} deep (limit "
+                       f"{MAX_EXP_NESTING}): its values overflow any number format")
 
     def real_value(self, value: sp.Expr, what: str) -> float:
         """The float of a constant, or a SpecError when it is not a finite real number."""

@@ -56,6 +56,7 @@ import keyword
 import math
 import runpy
 import tomllib
+import unicodedata
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -91,6 +92,16 @@ class LoadedSpec:
     label: str = ""
     problem: object | None = None
     inputs: dict = field(default_factory=dict)  # input name -> number or expression of t and the parameters
+
+
+def _plain_text(text: str, key: str, path: Path, *, newlines: bool = False) -> None:
+    """Refuse control and format characters (terminal escapes, carriage returns, bidirectional overrides) in
+    a free-text value: the CLI prints names and descriptions, and a spec must not drive the terminal."""
+    for i, ch in enumerate(text):
+        if (ch == "\n" and newlines) or unicodedata.category(ch) not in ("Cc", "Cf", "Zl", "Zp", "Cs", "Co", "Cn"):
+            continue
+        raise SpecError(f"{path}: '{key}' contains the control character {ch.encode('unicode_escape').decode()} "
+                        f"at position {i}: names and descriptions are plain text")
 
 
 def _names_list(data: dict, key: str, path: Path, *, required: bool) -> list[str]:
@@ -187,6 +198,7 @@ def _particles(data: dict, expr, path: Path) -> list:
         name = part.get("name", "")
         if not isinstance(name, str):
             raise SpecError(f"{path}: particles[{i}].name must be a string")
+        _plain_text(name, f"particles[{i}].name", path)
         coords = [expr(f"particles[{i}].position[{j}]", c, _POSITION_TERMS) for j, c in enumerate(pos)]
         out.append(Particle(expr(f"particles[{i}].mass", part["mass"], _POSITION_TERMS), coords, name=name))
     return out
@@ -229,6 +241,7 @@ def load_toml(path: Path) -> LoadedSpec:
     for key in ("name", "description"):
         if not isinstance(data.get(key, ""), str):
             raise SpecError(f"{path}: '{key}' must be a string")
+        _plain_text(data.get(key, ""), key, path, newlines=key == "description")
     coord_names = _names_list(data, "coordinates", path, required=True)
     input_names = _names_list(data, "inputs", path, required=False)
     names, coords, params = _namespace(coord_names, _names_list(data, "parameters", path, required=False), path,
