@@ -158,3 +158,20 @@ def test_spec_simulate_method_heyoka(tmp_path, capsys):
     assert main(["simulate", str(path), "-q"]) == 0
     out = capsys.readouterr().out
     assert "method heyoka" in out and abs(_state(out)["x"] - math.cos(2.0)) < 1e-10
+
+
+def test_sweep_with_method_heyoka_compiles_once():
+    """A sweep over k (in this process): every row matches x = cos(√k t), and the integrator is built at most
+    once for the whole sweep (parameters are heyoka runtime parameters)."""
+    from lagrange.sweep.driver import sweep
+
+    x = coordinates("x")
+    m, k = parameters("m k")
+    s = System([x], T=m * x.diff(t) ** 2 / 2, V=k * x**2 / 2)
+    before = heyoka_backend.compilations()
+    df = sweep(s, {"k": [4.0, 9.0, 16.0]}, t_end=2.0, initial={"x": 1.0, "x_dot": 0.0}, params={"m": 1.0},
+               method="heyoka", progress=False, workers=0, **TIGHT)
+    assert heyoka_backend.compilations() - before <= 1
+    assert list(df["status"]) == ["ok"] * 3
+    for kk, xf in zip(df["k"], df["final_x"]):
+        assert abs(xf - math.cos(2 * math.sqrt(kk))) < 1e-10
