@@ -8,12 +8,13 @@ from lagrange.integrate.scipy_ivp import SCIPY_METHODS
 def test_tables_match_the_integrators():
     assert SCIPY == tuple(SCIPY_METHODS)
     assert set(FIXED_STEP) == set(GEOMETRIC)
-    assert set(ADAPTIVE) == set(SCIPY_METHODS) | {"taylor", "auto"}
+    assert set(ADAPTIVE) == set(SCIPY_METHODS) | {"taylor", "heyoka", "auto"}
 
 
 def test_canonical_method_is_case_insensitive():
     assert canonical_method("dop853") == "DOP853"
     assert canonical_method("Taylor") == "taylor"
+    assert canonical_method("HEYOKA") == "heyoka"
     assert canonical_method(" RADAU ") == "Radau"
     assert canonical_method("GL4") == "gl4"
     assert canonical_method("rk4") is None

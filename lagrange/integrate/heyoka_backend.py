@@ -5,7 +5,9 @@ and steps with Jorba & Zou's rule, as :mod:`lagrange.integrate.taylor` does. The
 project's own — ``M q̈ = f`` from the derivation, converted by :mod:`lagrange.codegen.heyoka_expr` and reached
 through the compiled model (:meth:`~lagrange.codegen.numeric.NumericModel.heyoka_taylor`) — not a
 re-derivation by heyoka. Parameters are heyoka runtime parameters, so a run with other values (a sweep)
-reuses heyoka's compiled code. Optional: ``pip install "lagrange-dynamics[heyoka]"``.
+reuses heyoka's compiled code: the ``taylor_adaptive`` integrator is built (JIT-compiled) once per system and
+tolerance and kept (:func:`compilations` counts the builds); later runs reset its time, state and parameters.
+Optional: ``pip install "lagrange-dynamics[heyoka]"``.
 
 Tolerance: heyoka takes one ε with a mixed absolute/relative criterion (like ``atol = rtol``); the stricter of
 ``rtol`` and ``atol`` is used. Outputs at ``t_eval`` come from heyoka's dense output (``propagate_grid``).
@@ -18,6 +20,8 @@ check for signals): keep runs bounded with ``max_steps``.
 from __future__ import annotations
 
 import math
+import threading
+import weakref
 
 import numpy as np
 
@@ -26,7 +30,33 @@ from ..errors import InputError, IntegrationError
 from ..results.trajectory import Trajectory
 from .compiled import MAX_STEPS, check_output_times
 
-__all__ = ["integrate_heyoka"]
+__all__ = ["integrate_heyoka", "compilations"]
+
+#: the built integrators: HeyokaODEs -> {tolerance: (taylor_adaptive, lock)}
+_INTEGRATORS: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
+_GUARD = threading.Lock()
+_BUILDS = [0]
+
+
+def compilations() -> int:
+    """How many heyoka integrators this process has built (JIT-compiled); a re-run of the same system at the
+    same tolerance, with other parameter values or initial state, builds none."""
+    return _BUILDS[0]
+
+
+def _integrator(odes, tol: float, t0: float, z0, pars):
+    """``(taylor_adaptive, lock)`` for ``odes`` at ``tol``, reset to ``t0``, ``z0`` and ``pars`` (built once)."""
+    import heyoka as hy
+
+    with _GUARD:
+        per_system = _INTEGRATORS.setdefault(odes, {})
+        entry = per_system.get(tol)
+        if entry is None:
+            ta = hy.taylor_adaptive(odes.system, [float(v) for v in z0], time=t0, tol=tol,
+                                    pars=[float(v) for v in pars], compact_mode=odes.compact)
+            _BUILDS[0] += 1
+            entry = per_system[tol] = (ta, threading.Lock())
+    return entry
 
 
 def integrate_heyoka(model: NumericModel, t_span, y0, t_eval, *, rtol: float, atol: float,
@@ -63,8 +93,17 @@ def integrate_heyoka(model: NumericModel, t_span, y0, t_eval, *, rtol: float, at
     z0 = y0 if odes.nz == y0.size else np.append(y0, 0.0)
     import heyoka as hy
 
-    ta = hy.taylor_adaptive(odes.system, [float(v) for v in z0], time=t0, tol=max(min(rtol, atol), 2.0**-52),
-                            pars=[float(v) for v in model.params], compact_mode=odes.compact)
+    ta, lock = _integrator(odes, max(min(rtol, atol), 2.0**-52), t0, z0, model.params)
+    with lock:  # one run at a time on a shared integrator (threads of a sweep take turns)
+        ta.time = t0
+        ta.state[:] = z0
+        if odes.n_params:
+            ta.pars[:] = np.asarray(model.params, dtype=float)
+        return _propagate(ta, hy, odes, model, t0, t1, y0, t_eval, max_step, max_steps, label)
+
+
+def _propagate(ta, hy, odes, model, t0, t1, y0, t_eval, max_step, max_steps, label) -> Trajectory:
+    """The run itself on the reset integrator ``ta``."""
     grid = t_eval if t_eval.size and t_eval[0] == t0 else np.concatenate([[t0], t_eval])
     skip = grid.size - t_eval.size
     kw = {"max_steps": int(max_steps)}

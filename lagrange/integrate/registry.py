@@ -51,7 +51,7 @@ class Method:
         Baumgarte stabilization)
     inputs, varying_inputs : runs systems with inputs (constant values), and time-varying input values
     loops : who can run its steps: ``"python"`` (scipy or a Python loop), ``"numba"`` (a compiled numba loop),
-        ``"C"`` (a loop in C)
+        ``"C"`` (a loop in C), ``"LLVM"`` (heyoka's JIT-compiled loop)
     conservative_only : needs a conservative system (forces derivable from V only; no P, Q or inputs)
     dense_output : its output at ``t_eval`` comes from an interpolant (else the output is the steps recorded)
     precheck : ``"module:function"`` of ``precheck(equations)``, run before the generic check to refuse with the
@@ -116,6 +116,11 @@ METHODS: tuple[Method, ...] = (
            "adaptive Taylor series of order ceil(-ln(rtol)/2 + 1), analytic unconstrained systems",
            events=False, holonomic=False, nonholonomic=False, projection=False, friction_switches=False,
            rough=False, varying_inputs=False, loops=("C", "numba"), precheck="lagrange.integrate.taylor_run:precheck"),
+    Method("heyoka", "Taylor series", "adaptive", "lagrange.integrate.heyoka_run:run",
+           'heyoka.py\'s LLVM-compiled Taylor method on the derived equations; pip install '
+           '"lagrange-dynamics[heyoka]"', events=False, holonomic=False, nonholonomic=False, projection=False,
+           friction_switches=False, rough=False, varying_inputs=False, loops=("LLVM",),
+           precheck="lagrange.integrate.heyoka_run:precheck"),
     Method("midpoint", order="2", summary="implicit midpoint rule, symplectic", aliases=("implicit_midpoint",),
            **_GEOMETRIC),
     Method("gl4", order="4", summary="Gauss-Legendre collocation (2 stages), symplectic", **_GEOMETRIC),

@@ -1,0 +1,51 @@
+"""The run function of ``method="heyoka"`` (registry entry in :mod:`lagrange.integrate.registry`): model, initial
+state, then :func:`lagrange.integrate.heyoka_backend.integrate_heyoka` as it is. The registry has already refused
+events, constraints, friction switches and time-varying inputs; constant inputs are runtime parameters of the
+heyoka system (bound by name like every parameter, so a second run with other values reuses the compiled
+integrator)."""
+
+from __future__ import annotations
+
+import importlib.util
+
+import numpy as np
+
+from ..errors import BackendError, IntegrationError, LagrangeError
+from ..results.trajectory import Trajectory
+from .prepare import check_initial_mass_matrix, model_for, refuse_route
+from .request import RunRequest
+
+__all__ = ["run", "precheck", "heyoka_available"]
+
+_INSTALL = 'pip install "lagrange-dynamics[heyoka]"'
+
+
+def heyoka_available() -> bool:
+    """Whether ``import heyoka`` would succeed (without importing it)."""
+    return importlib.util.find_spec("heyoka") is not None
+
+
+def precheck(eqs) -> None:
+    """Refuse before any work when heyoka is missing (BackendError naming the extra). Constraints, events,
+    friction switches and time-varying inputs are refused by the registry (naming the methods that support
+    them); a non-analytic function left in the equations by the conversion (TapeError, named)."""
+    if not heyoka_available():
+        raise BackendError(f"method='heyoka' needs heyoka.py, which is not installed: {_INSTALL}")
+
+
+def run(req: RunRequest) -> Trajectory:
+    """``method="heyoka"`` (:mod:`lagrange.integrate.heyoka_backend`)."""
+    from .heyoka_backend import integrate_heyoka
+
+    refuse_route("method='heyoka' (its runtime parameters hold constants only)", req.schedule)
+    model = model_for(req.equations, req.params, req.model, req.backend, inputs=req.constants)
+    t0, t1 = req.t_span
+    check_initial_mass_matrix(req.system, model, t0, req.y0)
+    t_eval = np.linspace(t0, t1, req.n_points) if req.t_eval is None else req.t_eval
+    try:
+        return integrate_heyoka(model, (t0, t1), req.y0, t_eval, rtol=req.rtol, atol=req.atol,
+                                max_step=req.max_step, label="heyoka (taylor_adaptive, LLVM)")
+    except ValueError as exc:
+        if isinstance(exc, LagrangeError):
+            raise
+        raise IntegrationError(f"integration failed: {exc}") from exc
