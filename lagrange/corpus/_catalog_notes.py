@@ -10,9 +10,7 @@ needs: the statement, the figure's geometry, or the system referred to), ``"need
 NOT_CHECKABLE = "not checkable"
 GAP = "catalog gap"
 TO_ADD = "checkable: to add"
-ELLIPSOID = "needs the ellipsoidal earth (in progress)"
-SERIES = "needs potential series (in progress)"
-STATUSES = (NOT_CHECKABLE, GAP, TO_ADD, ELLIPSOID, SERIES)
+STATUSES = (NOT_CHECKABLE, GAP, TO_ADD)
 
 _TRANSFORM = ("the answer is a set of transformation equations, which a problem states (as its coordinates) rather "
               "than derives; there is no result of the System to compare")
@@ -36,8 +34,6 @@ NOTES: dict[str, tuple[str, str]] = {
               "catalog; the printed T cannot be rebuilt independently."),
     "p4.24": (GAP, "P4.10 by D'Alembert's equation, 'same answer as P4.10': P4.10's answer is not transcribed in "
               "the catalog (its system is in the corpus as P13.16/P16.7, whose answers are checked)."),
-    "p5.16": (SERIES, "Prove (5.13), the second-order expansion of a spring group's V about equilibrium: the "
-              "series expansion of a potential about a point is being added on another branch."),
     "ex6.7": (NOT_CHECKABLE, "The general method for a board on a viscous film (the δW integrand of (6.8)); its "
               "instances Ex 6.8 (rectangle) and Ex 6.12 (any shape) are in the corpus."),
     "p8.1": (NOT_CHECKABLE, f"Prove (8.0), the direction cosines of the normal to a plane: {_PROOF}."),
@@ -54,8 +50,6 @@ NOTES: dict[str, tuple[str, str]] = {
                "in the catalog, so the printed P cannot be rebuilt."),
     "ex12.7": (GAP, "τ_α of Ex 12.6 by Euler's equations: Ex 12.6 (T with products of inertia and three "
                "angles) is not transcribed in the catalog."),
-    "p14.1": (ELLIPSOID, "R1 and g' at 45° latitude from the ellipsoid formulas (14.1)-(14.9)."),
-    "p14.33": (ELLIPSOID, "The plumb-line deflection α from the ellipsoid formulas (see Table 14.1)."),
     "app.a8m": (NOT_CHECKABLE, f"Composition of direction-cosine matrices γ = αβ: {_PROPERTY} "
                 "(tests/test_rigid_body.py, rotation sequences against their matrix)."),
     "sec18.fq": (NOT_CHECKABLE, f"F_q = Σ F·∂r/∂q against virtual work: {_PROPERTY} (every GeneralizedForces "
