@@ -118,6 +118,8 @@ class MolecularRun(NamedTuple):
 
     @property
     def summary(self) -> Summary:
+        """The summary over the molecular run's steps: fell, fall time (the crossing interpolated inside the
+        step), P1's drift and drift rate."""
         r = self.result
         return summarize(r.t, r.x, r.fell, r.fall_time)
 
