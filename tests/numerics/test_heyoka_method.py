@@ -175,3 +175,30 @@ def test_sweep_with_method_heyoka_compiles_once():
     assert list(df["status"]) == ["ok"] * 3
     for kk, xf in zip(df["k"], df["final_x"]):
         assert abs(xf - math.cos(2 * math.sqrt(kk))) < 1e-10
+
+
+def test_ctrl_c_stops_a_heyoka_run_within_a_step_with_the_finished_outputs():
+    """SIGINT (here an alarm whose handler raises KeyboardInterrupt, as Ctrl-C's does) during a long heyoka run:
+    IntegrationInterrupted (a KeyboardInterrupt) arrives at once, its ``partial`` holds the outputs of the
+    finished chunks, each on the pendulum's closed form."""
+    import signal
+    import time
+
+    s = n_link_pendulum(1)
+    s.simulate(1.0, {"q1": 1.2, "q1_dot": 0.0}, {"g": 9.81}, method="heyoka", **TIGHT)  # compiled beforehand
+    previous = signal.signal(signal.SIGALRM, signal.default_int_handler)
+    signal.setitimer(signal.ITIMER_REAL, 0.5)
+    start = time.monotonic()
+    try:
+        with pytest.raises(lg.IntegrationInterrupted) as info:
+            s.simulate(1e7, {"q1": 1.2, "q1_dot": 0.0}, {"g": 9.81}, method="heyoka", n_points=2_000_001,
+                       **TIGHT)
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        signal.signal(signal.SIGALRM, previous)
+    assert time.monotonic() - start < 30  # the uninterrupted run takes minutes
+    err = info.value
+    assert isinstance(err, KeyboardInterrupt) and not err.partial.success and err.t > 0
+    part = err.partial
+    assert len(part.t) > 0 and part.t[-1] <= err.t
+    assert np.max(np.abs(part.y[:, 0] - _pendulum_closed_form(1.2, part.t))) < 1e-8
