@@ -93,7 +93,7 @@ BAD_API = [
 def _id(options) -> str:
     """A parameter id that is the same in every process (a function's repr holds its address: xdist workers
     would collect different ids)."""
-    return re.sub(r"<function [^>]*>", "<function>", str(options))
+    return re.sub(r"<function [^ ]* at 0x[0-9a-f]+>", "<function>", str(options))
 
 
 @pytest.mark.parametrize(("options", "names"), BAD_API, ids=[_id(o) for o, _ in BAD_API])
