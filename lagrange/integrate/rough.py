@@ -4,12 +4,19 @@ Within a segment the friction sign ``σ_k = sign(λ_k)·sign(v_s,k)`` of each ro
 so the reaction enters linearly (``M q̈ = f + Bλ``, B built in :mod:`lagrange.derive.multipliers`) and
 the segment is smooth. A segment ends when
 
-* a normal reaction λ_k changes sign: σ_k flips and integration continues, or
+* a normal reaction λ_k changes sign: σ_k flips and integration continues (the constraints are bilateral, so
+  the friction μ|λ_k| passes through zero continuously), or
 * a sliding velocity reaches zero: the integration stops there with a message — sticking (static
   friction) on a rough constraint is not modelled, as in Wells, whose results hold "only while the assumed
   sliding direction and the sign of f hold".
 
-At the start of each segment σ is chosen self-consistently (``sign(λ(σ))·sign(v_s) = σ``).
+At the start of each segment σ is chosen self-consistently (``sign(λ(σ))·sign(v_s) = σ``), except for the
+constraint whose λ_k just crossed zero: there λ_k is zero to rounding, its computed sign is noise, so the sign of
+λ_k is taken as the opposite of the one before the crossing, and the next segment watches λ_k only for the crossing
+back (``event.direction``) — the located root, on either side of zero, does not fire again at the segment start.
+(Without this guard a run restarted zero-length segments at the crossing without end.) A hard cap ends the run
+with an :class:`~lagrange.errors.IntegrationError` naming the constraint and the time when more than
+:data:`_MAX_RESTARTS_AT_ONE_INSTANT` segments in a row end at their starting instant.
 """
 
 from __future__ import annotations
@@ -26,10 +33,13 @@ from .switching import _Result
 __all__ = ["run_rough"]
 
 _MAX_SEGMENTS = 10_000
+_MAX_RESTARTS_AT_ONE_INSTANT = 20  # consecutive segments that end where they started: a chatter, never a hang
 
 
-def _choose_signs(model, t0, y, p, vs_fn, kinds):
-    """Self-consistent σ for every rough constraint at (t0, y)."""
+def _choose_signs(model, t0, y, p, vs_fn, kinds, forced=None):
+    """Self-consistent σ for every rough constraint at (t0, y); ``forced`` maps a constraint index k to the sign
+    of λ_k to use instead of the computed one (just after λ_k crossed zero)."""
+    forced = forced or {}
     eqs = model.equations
     n2 = 2 * eqs.n
     nparam = len(eqs.parameters)
@@ -55,7 +65,7 @@ def _choose_signs(model, t0, y, p, vs_fn, kinds):
         lam = np.asarray(model.dynamics(t0, y, p)[n2:], dtype=float)
         changed = False
         for i, (k, _) in enumerate(kinds):
-            want = np.sign(lam[k] if lam[k] != 0 else 1.0) * np.sign(v[i])
+            want = forced.get(k, np.sign(lam[k] if lam[k] != 0 else 1.0)) * np.sign(v[i])
             if p[nparam + i] != want:
                 p[nparam + i] = want
                 changed = True
@@ -100,9 +110,12 @@ def run_rough(model, f_of, t_span, z0, t_eval, events, kwargs, projector):
     y_events = [[] for _ in user_events]
     nfev, message = 0, "The solver successfully reached the end of the integration interval."
     p = np.array(model.params, dtype=float)
+    nparam = len(eqs.parameters)
+    forced: dict[int, float] = {}  # k -> sign of λ_k after it crossed zero at t_cur (see the module docstring)
+    same_instant = 0
     for _segment in range(_MAX_SEGMENTS):
         try:
-            p = _choose_signs(model, t_cur, z_cur[:n2], p, vs_fn, kinds)
+            p = _choose_signs(model, t_cur, z_cur[:n2], p, vs_fn, kinds, forced)
         except _Stop as stop:
             message = str(stop)
             break
@@ -117,7 +130,8 @@ def run_rough(model, f_of, t_span, z0, t_eval, events, kwargs, projector):
         seg_events = []
         for i, (k, _) in enumerate(kinds):
             e1 = _bind(ev_slide, i=i)
-            e2 = _bind(ev_normal, k=k)
+            # after λ_k crossed zero, only the crossing back ends the segment (λ_k starts at zero to rounding)
+            e2 = _bind(ev_normal, direction=-forced[k] if k in forced else 0, k=k)
             seg_events += [e1, e2]
         all_events = seg_events + user_events
         f = f_of(seg_model)
@@ -143,13 +157,24 @@ def run_rough(model, f_of, t_span, z0, t_eval, events, kwargs, projector):
             message = "A termination event occurred."
             break
         te_, j = min(fired)
+        k = kinds[j // 2][0]
+        same_instant = same_instant + 1 if te_ - t_cur <= 1e-12 * max(1.0, abs(t_cur)) else 0
         z_cur = np.array(res.y_events[j][0], dtype=float)
         t_cur = te_
         if j % 2 == 0:  # sliding velocity reached zero
-            k = kinds[j // 2][0]
             message = (f"Sliding stopped on the rough constraint {eqs.constraint_names[k]} at t={t_cur:.9g}; "
                        "sticking (static friction) is not modelled, the run ends here.")
             break
+        if same_instant > _MAX_RESTARTS_AT_ONE_INSTANT:
+            raise IntegrationError(
+                f"rough constraint {eqs.constraint_names[k]}: the normal force changed sign {same_instant} times at "
+                f"t={t_cur:.9g} without the integration advancing (a friction-sign chatter, e.g. Painlevé's "
+                "paradox: no consistent friction direction); the run stops here")
+        # λ_k crossed zero: its sign after the crossing is the opposite of the one this segment assumed,
+        # σ_k = sign(λ_k)·sign(v_s) (v_s > 0 for friction over a surface)
+        i = j // 2
+        v_sign = float(np.sign(vs_fn(t_cur, z_cur[:n2], p)[i])) or 1.0
+        forced = {k: -float(p[nparam + i]) * v_sign}
     else:
         raise IntegrationError(f"more than {_MAX_SEGMENTS} friction-sign changes: the normal force chatters")
     if not out_t:  # stopped before the first step: report the state where it stopped
@@ -161,10 +186,10 @@ def run_rough(model, f_of, t_span, z0, t_eval, events, kwargs, projector):
     return r
 
 
-def _bind(fn, **kw):
+def _bind(fn, direction=0, **kw):
     def ev(t_, z):
         return fn(t_, z, **kw)
 
     ev.terminal = True
-    ev.direction = 0
+    ev.direction = direction
     return ev
