@@ -867,7 +867,7 @@ def _silence_stdout() -> None:
 
 
 def _printable(value) -> str:
-    from .printing import printable
+    from ._text import printable
 
     return printable(str(value), keep="\n")
 

@@ -10,8 +10,6 @@ code never see either.
 
 from __future__ import annotations
 
-import unicodedata
-
 import sympy as sp
 from sympy.printing.latex import LatexPrinter
 from sympy.printing.pretty.pretty import PrettyPrinter
@@ -19,6 +17,7 @@ from sympy.printing.pretty.pretty_symbology import pretty_symbol
 from sympy.printing.pretty.stringpict import prettyForm, stringPict
 from sympy.simplify.fu import TR5, TR6, TR10i
 
+from ._text import printable
 from .budget import PRINT_NODES, check, fits
 from .conventions import t
 from .errors import SymbolicTimeoutError
@@ -84,23 +83,6 @@ def pretty(expr) -> str:
 
 # ------------------------------------------------------------------------------------------ user text
 
-_UNPRINTABLE = ("Cc", "Cf", "Zl", "Zp", "Cs", "Co", "Cn")
-
-
-def printable(text: str, *, keep: str = "") -> str:
-    r"""``text`` with every control or format character (terminal escapes such as ``\x1b[2J``, carriage
-    returns, bidirectional overrides such as U+202E) written as its Python escape, except those in ``keep``
-    (e.g. ``"\n"`` for a multi-line message). Every user string the CLI prints (a system's name, a spec's
-    label, an error message quoting a spec) goes through it, so a spec cannot drive the terminal.
-
-    >>> printable("pendulum\x1b[2J")
-    'pendulum\\x1b[2J'
-    """
-    text = str(text)
-    if text.isprintable():
-        return text
-    return "".join(ch if ch in keep or unicodedata.category(ch) not in _UNPRINTABLE
-                   else ch.encode("unicode_escape").decode("ascii") for ch in text)
 
 
 # ---------------------------------------------------------------------------------------- trigonometry

@@ -56,7 +56,7 @@ def active() -> bool:
 def note(message: str) -> None:
     """One line ``lagrange: message`` on stderr when reports are on."""
     if _ACTIVE.get():
-        from .printing import printable  # may quote a user's file name
+        from ._text import printable  # may quote a user's file name
 
         print(f"lagrange: {printable(message)}", file=sys.stderr, flush=True)
 
@@ -124,7 +124,7 @@ def heartbeat(what: str, *, every: float = 2.0) -> Iterator[None]:
     if not _ACTIVE.get():
         yield
         return
-    from .printing import printable  # a spec's label is user text: never a terminal escape
+    from ._text import printable  # a spec's label is user text: never a terminal escape
 
     what = printable(what)
     print(f"lagrange: {what} …", file=sys.stderr, flush=True)
