@@ -238,9 +238,24 @@ def run_in_child(case: Case) -> dict:
     return {"outcome": "wrong" if wrong else "ok", "message": wrong, "printed_lines": text.count("\n") + 1}
 
 
-def _limits() -> None:
+def _address_space() -> int:
+    """This process's current virtual size in bytes (0 where /proc is missing)."""
+    try:
+        with open("/proc/self/status", encoding="ascii") as fh:
+            for line in fh:
+                if line.startswith("VmSize:"):
+                    return int(line.split()[1]) * 1024
+    except OSError:
+        pass
+    return 0
+
+
+def _limits(forked: bool = False) -> None:
+    """CPU and memory limits of a child. A fork inherits its parent's address space (a test worker that has
+    loaded numba's or heyoka's LLVM reserves gigabytes of it), so its limit is that size plus the budget."""
     resource.setrlimit(resource.RLIMIT_CPU, (CPU_SECONDS, CPU_SECONDS + 5))
-    resource.setrlimit(resource.RLIMIT_AS, (MEMORY_BYTES, MEMORY_BYTES))
+    limit = MEMORY_BYTES + (_address_space() if forked else 0)
+    resource.setrlimit(resource.RLIMIT_AS, (limit, limit))
 
 
 def run_case(case: Case, *, fresh: bool = True) -> dict:
@@ -267,7 +282,7 @@ def run_case(case: Case, *, fresh: bool = True) -> dict:
         if pid == 0:  # the child
             os.close(r)
             try:
-                _limits()
+                _limits(forked=True)
                 result = json.dumps(run_in_child(case))
             except BaseException as exc:  # noqa: BLE001 - reported to the parent, which fails the case
                 result = json.dumps({"outcome": "crash", "error": type(exc).__name__, "message": str(exc)[:300]})

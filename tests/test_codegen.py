@@ -88,9 +88,16 @@ def test_numba_cache_reused_and_corruption_recovered(tmp_path, monkeypatch):
     from lagrange.errors import CacheIntegrityWarning
 
     monkeypatch.setenv("LAGRANGE_CACHE_DIR", str(tmp_path))
-    s = n_link_pendulum(2)
+    # a system no other test compiles: a module already staged in this process (another test of the same
+    # xdist worker) is not compiled again, so numba would write nothing to this test's cache
+    from lagrange import System, coordinates, parameters, t
+
+    q1, q2 = coordinates("q1 q2")
+    kc = parameters("k_numba_cache_test")
+    s = System([q1, q2], T=(q1.diff(t) ** 2 + 2 * q2.diff(t) ** 2) / 2,
+               V=kc * (q1**2 + q2**2) / 2 + q1**2 * q2**2 / 7)
     y = np.array([0.3, -0.2, 0.1, 0.4])
-    model = s.compile({"g": 9.81}, backend="numba")
+    model = s.compile({"k_numba_cache_test": 9.81}, backend="numba")
     first = model.fun(0.0, y)
     bundles = list(cache_dir().glob("rhs_*.numba"))
     assert len(bundles) == 1 and read_verified(bundles[0]), "numba wrote no cache"
@@ -100,7 +107,7 @@ def test_numba_cache_reused_and_corruption_recovered(tmp_path, monkeypatch):
     nb._STAGED.pop(staged)
     with pytest.warns(CacheIntegrityWarning):
         monkeypatch.setattr("lagrange.codegen.cache._warned", False)
-        again = s.compile({"g": 9.81}, backend="numba").fun(0.0, y)
+        again = s.compile({"k_numba_cache_test": 9.81}, backend="numba").fun(0.0, y)
     assert np.array_equal(first, again)
     assert len(list(cache_dir().glob("rhs_*.numba"))) == 1 and read_verified(bundles[0])
 

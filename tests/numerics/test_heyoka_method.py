@@ -201,4 +201,5 @@ def test_ctrl_c_stops_a_heyoka_run_within_a_step_with_the_finished_outputs():
     assert isinstance(err, KeyboardInterrupt) and not err.partial.success and err.t > 0
     part = err.partial
     assert len(part.t) > 0 and part.t[-1] <= err.t
-    assert np.max(np.abs(part.y[:, 0] - _pendulum_closed_form(1.2, part.t))) < 1e-8
+    # the phase error (of the run and of the closed form's own evaluation) grows linearly with t
+    assert np.all(np.abs(part.y[:, 0] - _pendulum_closed_form(1.2, part.t)) < 1e-10 * (1 + part.t))
