@@ -162,6 +162,7 @@ def _has_numba() -> bool:
     return importlib.util.find_spec("numba") is not None
 
 
+@pytest.mark.slow  # over ~9 s in the default run: moved to the slow set (issue #20: default run < 10 min)
 def test_hit_in_fresh_process_is_identical(tmp_path, monkeypatch):
     """A second fresh interpreter (other hash seed) with derivation and CSE disabled by force gets the same
     equations (srepr), the same source and the same simulation, bit for bit; it writes no entry. Both agree

@@ -26,6 +26,7 @@ def test_divided_difference_is_rewritten_without_cancellation():
     assert abs(naive - float(exact_value)) > 1e-6 * abs(float(exact_value))  # the naive quotient is ruined
 
 
+@pytest.mark.slow  # over ~9 s in the default run: moved to the slow set (issue #20: default run < 10 min)
 def test_energy_and_momenta_conserved_to_rounding():
     """Stiff pair forces (A = 1e6), 300,000 steps: energy to rounding, horizontal momentum and the vertical
     angular momentum exactly (the plane's reaction and gravity are vertical)."""
@@ -42,6 +43,7 @@ def test_energy_and_momenta_conserved_to_rounding():
     assert np.max(np.abs(res.x[:, 0, 2])) == 0.0  # the tip stays on the plane
 
 
+@pytest.mark.slow  # over ~9 s in the default run: moved to the slow set (issue #20: default run < 10 min)
 def test_fixed_coordinate_and_non_rational_potential():
     r = sp.Symbol("r", positive=True)
     ps = PairSystem([1.0, 1.0], 50 * (r - 1) ** 2 + sp.exp(-r), r)  # non-rational: guarded quotient
@@ -73,6 +75,7 @@ def test_the_slow_top_falls_in_both_models():
     assert mol.fell and mol.fall_time == pytest.approx(fall[0], abs=0.05)
 
 
+@pytest.mark.slow  # over ~9 s in the default run: moved to the slow set (issue #20: default run < 10 min)
 def test_external_potential_conserves_energy():
     """Two particles on a stiff spring in an anharmonic external well U = x⁴/4 + y²: energy to rounding."""
     r = sp.Symbol("r", positive=True)

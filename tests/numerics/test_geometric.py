@@ -30,6 +30,7 @@ def test_convergence_order(method, order, loop):
     assert slope == pytest.approx(order, abs=0.2)
 
 
+@pytest.mark.slow  # over ~9 s in the default run: moved to the slow set (issue #20: default run < 10 min)
 def test_discrete_gradient_conserves_energy_of_a_nonseparable_system():
     s = n_link_pendulum(2)
     q1, q2 = s.coordinates
@@ -157,6 +158,7 @@ def test_generated_hessian_is_the_derivative_of_the_gradient(case):
         assert np.allclose(hm.grad(tt, z), fdH, rtol=1e-6, atol=1e-6)
 
 
+@pytest.mark.slow  # over ~9 s in the default run: moved to the slow set (issue #20: default run < 10 min)
 def test_fixed_loop_choice():
     s, ic, p = double_pendulum()
     model = s.compile(p, backend="numba")

@@ -69,6 +69,7 @@ def _all_operations_system():
     return System([x], T=T, V=V, forces={x: -sp.sin(t) * x.diff(t) / 10})
 
 
+@pytest.mark.slow  # over ~9 s in the default run: moved to the slow set (issue #20: default run < 10 min)
 @pytest.mark.parametrize("backend", ["python", "numba"])
 def test_every_operation_against_tight_dop853(backend):
     s = _all_operations_system()
@@ -80,6 +81,7 @@ def test_every_operation_against_tight_dop853(backend):
     assert np.max(np.abs(sol.work - ref.work)) < 1e-10  # the forced, non-conservative system's work integral
 
 
+@pytest.mark.slow  # over ~9 s in the default run: moved to the slow set (issue #20: default run < 10 min)
 def test_c_interpreter_and_compiled_series_both_match_the_closed_form():
     """The two engines kept (C interpreter, compiled series) each against Kepler's equation at tight tolerance:
     backward over 2 revolutions, the labels saying which engine ran."""
@@ -102,6 +104,7 @@ def _forms(system, params, order):
     return model, tape, model.taylor_series(), model.taylor_series(order)
 
 
+@pytest.mark.slow  # over ~9 s in the default run: moved to the slow set (issue #20: default run < 10 min)
 @pytest.mark.parametrize("case", ["every_operation", "double_pendulum", "kepler"])
 def test_series_forms_give_the_taylor_polynomial_of_the_true_solution(case):
     """Both forms of the compiled series (loops; written out for one order) give Taylor coefficients whose
@@ -141,6 +144,7 @@ def test_series_forms_give_the_taylor_polynomial_of_the_true_solution(case):
     np.testing.assert_allclose(coefficients[0], coefficients[1], rtol=1e-13, atol=1e-300)
 
 
+@pytest.mark.slow  # over ~9 s in the default run: moved to the slow set (issue #20: default run < 10 min)
 def test_written_out_series_refuses_another_order():
     s = n_link_pendulum(2)
     model, tape, _, written = _forms(s, {"g": 9.81}, 9)
@@ -177,6 +181,7 @@ def test_backward_run_returns_to_the_start():
     assert np.max(np.abs(back.y[-1] - [0.6, -0.3, 0.0, 0.0])) < 1e-10
 
 
+@pytest.mark.slow  # over ~9 s in the default run: moved to the slow set (issue #20: default run < 10 min)
 def test_energy_bounded_over_many_periods():
     """Kepler, 200 revolutions at rtol 1e-14: relative energy error stays at the round-off level."""
     T = 400 * math.pi
@@ -186,6 +191,7 @@ def test_energy_bounded_over_many_periods():
     assert np.max(np.abs(E / E[0] - 1)) < 1e-12
 
 
+@pytest.mark.slow  # over ~9 s in the default run: moved to the slow set (issue #20: default run < 10 min)
 def test_auto_picks_taylor_at_tight_tolerance_or_when_the_c_interpreter_runs_a_python_model(monkeypatch):
     """numba models: Taylor only at rtol ≤ 1e-11 (their compiled DOP853 loop is as fast at loose tolerance);
     python models: Taylor at any tolerance when the C interpreter is here (scipy's loop steps in Python), but
@@ -337,6 +343,7 @@ def test_each_engine_stops_where_the_closed_form_says(engine):
     assert np.max(np.abs(part.y[:-5, 0] - exact_x[:-5])) < 1e-7
 
 
+@pytest.mark.slow  # over ~9 s in the default run: moved to the slow set (issue #20: default run < 10 min)
 def test_chunked_runs_equal_one_uninterrupted_run(monkeypatch):
     """Interrupt points cost nothing: chunks of 1 step (resuming from the exact state) give the same result
     as chunks of up to 10⁷ steps, for each engine."""
