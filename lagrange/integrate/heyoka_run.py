@@ -8,11 +8,9 @@ from __future__ import annotations
 
 import importlib.util
 
-import numpy as np
-
 from ..errors import BackendError, IntegrationError, LagrangeError
 from ..results.trajectory import Trajectory
-from .prepare import check_initial_mass_matrix, model_for, refuse_route
+from .prepare import constant_input_run
 from .request import RunRequest
 
 __all__ = ["run", "precheck", "heyoka_available"]
@@ -37,13 +35,9 @@ def run(req: RunRequest) -> Trajectory:
     """``method="heyoka"`` (:mod:`lagrange.integrate.heyoka_backend`)."""
     from .heyoka_backend import integrate_heyoka
 
-    refuse_route("method='heyoka' (its runtime parameters hold constants only)", req.schedule)
-    model = model_for(req.equations, req.params, req.model, req.backend, inputs=req.constants)
-    t0, t1 = req.t_span
-    check_initial_mass_matrix(req.system, model, t0, req.y0)
-    t_eval = np.linspace(t0, t1, req.n_points) if req.t_eval is None else req.t_eval
+    model, t_eval = constant_input_run(req, "method='heyoka' (its runtime parameters hold constants only)")
     try:
-        return integrate_heyoka(model, (t0, t1), req.y0, t_eval, rtol=req.rtol, atol=req.atol,
+        return integrate_heyoka(model, req.t_span, req.y0, t_eval, rtol=req.rtol, atol=req.atol,
                                 max_step=req.max_step, label="heyoka (taylor_adaptive, LLVM)")
     except ValueError as exc:
         if isinstance(exc, LagrangeError):

@@ -18,7 +18,8 @@ from ..conventions import VELOCITY_SUFFIX
 from ..errors import InitialConditionError, InputError, OptionError, ParameterError, SingularMassMatrixError
 from ..model.coordinates import coordinate_name, is_coordinate
 
-__all__ = ["initial_state", "model_for", "check_initial_mass_matrix", "refuse_route", "split_inputs", "check_model",
+__all__ = ["initial_state", "model_for", "check_initial_mass_matrix", "refuse_route", "constant_input_run",
+           "split_inputs", "check_model",
            "GimbalLockWarning"]
 
 
@@ -157,6 +158,18 @@ def refuse_route(route: str, schedule) -> None:
         raise InputError(f"{route} cannot run time-varying inputs ({schedule.describe()}): it does not call Python "
                          f"per step, so it supports constant inputs only. Time-varying inputs run with "
                          f"{NumericModel.varying_routes()}")
+
+
+def constant_input_run(req, route: str) -> tuple[NumericModel, np.ndarray]:
+    """``(model, t_eval)`` for a method whose compiled code holds the inputs as constants (the Taylor method,
+    heyoka): time-varying inputs refused naming ``route``, the model built (or ``req.model`` checked), the
+    initial mass matrix checked, the output times (``n_points`` evenly spaced unless ``t_eval`` was given)."""
+    refuse_route(route, req.schedule)
+    model = model_for(req.equations, req.params, req.model, req.backend, inputs=req.constants)
+    t0, t1 = req.t_span
+    check_initial_mass_matrix(req.system, model, t0, req.y0)
+    t_eval = np.linspace(t0, t1, req.n_points) if req.t_eval is None else req.t_eval
+    return model, t_eval
 
 
 def split_inputs(eqs, params: Mapping, inputs, t_span, y0) -> tuple[dict, dict, object]:

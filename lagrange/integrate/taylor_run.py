@@ -4,12 +4,10 @@ constraints, friction switches and time-varying inputs."""
 
 from __future__ import annotations
 
-import numpy as np
-
 from ..codegen.numeric import NumericModel
 from ..errors import IntegrationError, LagrangeError
 from ..results.trajectory import Trajectory
-from .prepare import check_initial_mass_matrix, model_for, refuse_route
+from .prepare import constant_input_run
 from .request import RunRequest
 
 __all__ = ["run", "taylor_ready", "precheck"]
@@ -41,15 +39,11 @@ def run(req: RunRequest) -> Trajectory:
     """``method="taylor"`` (:mod:`lagrange.integrate.taylor`)."""
     from .taylor import integrate_taylor, interpreter
 
-    refuse_route("method='taylor' (its tape holds constants only)", req.schedule)
-    model = model_for(req.equations, req.params, req.model, req.backend, inputs=req.constants)
-    t0, t1 = req.t_span
-    check_initial_mass_matrix(req.system, model, t0, req.y0)
-    t_eval = np.linspace(t0, t1, req.n_points) if req.t_eval is None else req.t_eval
+    model, t_eval = constant_input_run(req, "method='taylor' (its tape holds constants only)")
     how = "compiled series" if model.backend == "numba" else f"interpreted tape, {interpreter()}"
     label = f"taylor ({how}" + (f"; auto: {req.why})" if req.why else ")")
     try:
-        return integrate_taylor(model, (t0, t1), req.y0, t_eval, rtol=req.rtol, atol=req.atol,
+        return integrate_taylor(model, req.t_span, req.y0, t_eval, rtol=req.rtol, atol=req.atol,
                                 max_step=req.max_step, label=label)
     except ValueError as exc:
         raise IntegrationError(f"integration failed: {exc}") from exc
