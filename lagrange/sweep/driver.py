@@ -123,7 +123,7 @@ def sweep(system, over: Mapping[str, Sequence[float] | str], *, t_end: float | N
         task = SimulationTask(system, t_end, initial or {}, params, options=options, summaries=summaries,
                               setup=setup, events=events, backend=backend, first_point=points[0], inputs=inputs)
         task.check_point(points[0])
-    reserved = reserved_columns(task, state_names(system) if isinstance(task, SimulationTask) else ())
+    reserved = reserved_columns(task, state_names(task.system) if isinstance(task, SimulationTask) else ())
     check_point_names(names, reserved)
     config = run_config(task)
     ids = [run_id(p) for p in points]
