@@ -143,7 +143,14 @@ def write_module(prefix: str, text: str) -> tuple[str, Path]:
     key = cache_key(text)
     stem = f"{prefix}_{key}"
     path = _stage_dir() / f"{stem}.py"
-    if path not in _STAGED:
+    staged = _STAGED.get(path)
+    if staged is not None and staged.bundle_path != cache_dir() / f"{stem}.numba":
+        # the cache directory changed in this process ($LAGRANGE_CACHE_DIR): the module stays staged and
+        # compiled, and what numba cached is sealed into the current directory from now on (load_cached
+        # harvests it there at once)
+        staged.bundle_path = cache_dir() / f"{stem}.numba"
+        staged.bundle = read_verified(staged.bundle_path)
+    if staged is None:
         bundle_path = cache_dir() / f"{stem}.numba"
         bundle = read_verified(bundle_path)
         path.write_text(text, encoding="utf-8")

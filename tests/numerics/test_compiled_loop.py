@@ -249,8 +249,10 @@ def test_loop_is_cached_on_disk_and_reused_by_a_fresh_process(tmp_path, monkeypa
     monkeypatch.setenv("LAGRANGE_CACHE_DIR", str(tmp_path))
     model = n_link_pendulum(1).compile({"g": 9.81}, backend="numba")
     here = run_loop(model, "RK45", (0.0, 1.0), [0.5, 0.0], [1.0], rtol=1e-8, atol=1e-8)
-    (module,) = tmp_path.glob("rkloops_*.py")
-    assert "def rk45(" in module.read_text()
+    (bundle,) = tmp_path.glob("rkloops_*.numba")  # numba's cache of the loops, sealed (lagrange.codegen.cache)
+    from lagrange.codegen.cache import read_verified
+
+    assert read_verified(bundle)
     script = textwrap.dedent("""
         import json
         from lagrange.examples import n_link_pendulum
