@@ -11,6 +11,8 @@ display code lives here, once, and the classes stay about their data:
 :class:`~lagrange.analysis.hamilton.HamiltonianForm`    :func:`hamiltonian_latex` (H, canonical equations)
 :class:`~lagrange.sweep.ensemble.EnsembleResult`        :func:`ensemble_html` (members, status, work)
 :class:`~lagrange.analysis.equilibria.Equilibrium`      :func:`equilibrium_latex` (positions, multipliers λ)
+:class:`~lagrange.analysis.series.PotentialSeries`      :func:`potential_series_latex` (series by degree)
+:class:`~lagrange.discrete.greenspan.Summary`           :func:`greenspan_summary_html` (fall, P1 drift)
 =====================================================  ====================================================
 
 ``sweep()`` returns a pandas DataFrame, which Jupyter already shows as a table. Every string taken from
@@ -29,7 +31,8 @@ from .errors import LagrangeError
 from .model.coordinates import coordinate_name, to_symbols
 
 __all__ = ["html_table", "trajectory_summary", "trajectory_html", "linear_model_latex", "modes_html",
-           "hamiltonian_latex", "ensemble_html", "equilibrium_latex"]
+           "hamiltonian_latex", "ensemble_html", "equilibrium_latex", "potential_series_latex",
+           "greenspan_summary_html"]
 
 
 def html_table(rows: Iterable[Iterable], *, header: Iterable | None = None, caption: str | None = None) -> str:
@@ -137,6 +140,26 @@ def equilibrium_latex(eq) -> str:
     rows += [rf"\lambda_{{\text{{{_latex_text(name)}}}}} &= {sp.latex(to_symbols(sp.sympify(v), coords))}"
              for name, v in eq.multipliers.items()]
     return r"$\displaystyle \begin{aligned} " + r" \\ ".join(rows) + r" \end{aligned}$"
+
+
+def potential_series_latex(series) -> str:
+    r"""``V ≈ Σ_k terms[k]`` written by degree, with the expansion point (``q → ∞`` for a far-field series)."""
+    rows = [rf"V_{{{k}}} &= {sp.latex(term)}" for k, term in enumerate(series.terms)]
+    point = ",\\ ".join(rf"{sp.latex(q)} = {sp.latex(v)}" for q, v in series.about.items())
+    rows.append(rf"&\text{{about }} {point},\ \text{{order }} {series.order}")
+    return r"$\displaystyle \begin{aligned} " + r" \\ ".join(rows) + r" \end{aligned}$"
+
+
+def greenspan_summary_html(summary) -> str:
+    """HTML table of a Greenspan top run's summary: the span, whether (and when) it fell, P1's drift and mean
+    velocity, the height range of the centre."""
+    rows = summary.report()
+    dx, dy = summary.P1_drift
+    table = [("output times", f"{len(summary.t)}, t = {summary.t[0]:.6g} … {summary.t[-1]:.6g}"),
+             ("fell", f"yes, at t = {summary.fall_time:.6g}" if summary.fell else "no"),
+             ("P1 drift", f"({dx:+.6f}, {dy:+.6f})"),
+             ("P̄ height range", f"{summary.zbar_range[0]:.6g} … {summary.zbar_range[1]:.6g}")]
+    return html_table(table, caption=rows[0])
 
 
 def _latex_text(name: str) -> str:

@@ -166,3 +166,31 @@ def test_equilibrium_latex_names_positions_and_multipliers():
     assert text.startswith("$") and text.endswith("$")
     assert "y &= - l" in text and "x &= 0" in text
     assert r"\lambda_{\text{rod\_1\&2}} &= - g m" in text
+
+
+def test_potential_series_latex_by_degree():
+    """Wells §5.10: V = k x²/2 + a x³ about x = 0 to order 3 shows each degree (the series' own terms)."""
+    from lagrange import expand_potential
+
+    x = sp.Symbol("x")
+    k, a = sp.symbols("k a")
+    series = expand_potential(k * x**2 / 2 + a * x**3, {x: 0}, order=3)
+    text = series._repr_latex_()
+    assert text.startswith("$") and text.endswith("$")
+    assert rf"V_{{2}} &= {sp.latex(k * x**2 / 2)}" in text and rf"V_{{3}} &= {sp.latex(a * x**3)}" in text
+    assert r"\text{about } x = 0" in text and "order } 3" in text
+
+
+def test_greenspan_summary_table():
+    """A Greenspan run's summary as a table: fall, P1's drift (here a P1 moving by (0.3, −0.1))."""
+    from lagrange.discrete.greenspan import summarize
+
+    tt = np.linspace(0.0, 2.0, 5)
+    vertices = np.zeros((5, 4, 3))
+    vertices[:, 1:, 2] = 1.0
+    vertices[:, 0, 0] = 0.15 * tt
+    vertices[:, 0, 1] = -0.05 * tt
+    rows = _table(summarize(tt, vertices, False, None)._repr_html_())
+    cells = {r[0]: r[1] for r in rows if len(r) == 2}
+    assert cells["fell"] == "no" and cells["P1 drift"] == "(+0.300000, -0.100000)"
+    assert cells["output times"].startswith("5, t = 0")

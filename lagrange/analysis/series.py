@@ -60,6 +60,11 @@ class PotentialSeries:
     gradient: tuple = ()
     stiffness: sp.ImmutableMatrix | None = None
 
+    def _repr_latex_(self) -> str:
+        from ..display import potential_series_latex
+
+        return potential_series_latex(self)
+
     @property
     def quadratic_form(self) -> sp.Expr:
         """The degree-2 part ``½ δqᵀ K δq`` (about a finite point)."""

@@ -261,6 +261,11 @@ class Summary:
     P1_drift: np.ndarray  # (2,) P1(t_end) − P1(0)
     P1_drift_rate: np.ndarray  # (2,) least-squares slope of P1(t): the mean velocity of the contact point
 
+    def _repr_html_(self) -> str:
+        from ..display import greenspan_summary_html
+
+        return greenspan_summary_html(self)
+
     def report(self) -> list[str]:
         """The lines the CLI prints: fall (with its definition) and P1's drift."""
         fall = (f"the top falls at t = {self.fall_time:.6g} (a weighted vertex reaches the plane z = 0)"
