@@ -73,7 +73,11 @@ def chains(draw):
     random fixed direction) hanging from the previous particle; a particle at the end of each link."""
     n = draw(st.integers(1, 3))
     kinds = draw(st.lists(st.sampled_from(["link", "slider"]), min_size=n, max_size=n))
-    angles = draw(st.lists(st.floats(-1.5, 1.5), min_size=n, max_size=n))
+    # Slider directions: zero or at least 1e-6 rad off an axis. An angle like 5e-324 gives a constant the
+    # expression budget refuses, by design, with ExpressionTooLarge (constants outside [1e-300, 1e300]);
+    # that refusal is tested in tests/spec/test_hostile.py, not a derivation this property is about.
+    angle = st.one_of(st.just(0.0), st.floats(1e-6, 1.5), st.floats(-1.5, -1e-6))
+    angles = draw(st.lists(angle, min_size=n, max_size=n))
     masses = draw(st.lists(st.floats(0.3, 3.0), min_size=n, max_size=n))
     lengths = draw(st.lists(st.floats(0.3, 2.0), min_size=n, max_size=n))
     springs = draw(st.lists(st.floats(0.0, 5.0), min_size=n, max_size=n))
