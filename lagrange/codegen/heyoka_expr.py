@@ -31,7 +31,7 @@ from ..errors import BackendError
 from .cse import fuse
 from .tape import TapeError, _check_analytic
 
-__all__ = ["HeyokaODEs", "heyoka_odes", "heyoka_available", "COMPACT_OPS"]
+__all__ = ["HeyokaODEs", "heyoka_odes", "heyoka_available", "convert_expression", "COMPACT_OPS"]
 
 #: systems whose fused expressions have more operations than this get heyoka's ``compact_mode`` (its LLVM
 #: compile time explodes otherwise: measured on the 5-link pendulum, 25 s default vs 1.7 s compact)
@@ -125,6 +125,22 @@ def _solve(mass: dict, force: list, n: int, hy) -> list:
                 s = s - L[j, i] * a[j]
         a[i] = s
     return a
+
+
+def convert_expression(e: sp.Expr):
+    """``e``, a sympy expression over ``t`` and the state symbols ``y0 … y{nz-1}`` (``y{2n}`` the work
+    integral), as a heyoka expression over the variables of :func:`heyoka_odes`' system (an event)."""
+    import heyoka as hy
+
+    table: dict = {}
+    for s in e.free_symbols:
+        if s.name == "t":
+            table[s] = hy.time
+        elif s.name.startswith("y") and s.name[1:].isdigit():
+            table[s] = hy.make_vars(f"z{s.name[1:]}")
+        else:
+            raise TapeError(f"heyoka: the symbol {s} is not a state or time")
+    return _convert(e, table, hy)
 
 
 def heyoka_odes(eqs: Equations) -> HeyokaODEs:

@@ -376,6 +376,21 @@ class NumericModel:
 
         return heyoka_odes(self.equations)
 
+    def heyoka_events(self, events, t0: float, z0) -> tuple:
+        """The user's event callables traced into heyoka events (:func:`lagrange.codegen.heyoka_events.
+        heyoka_events`); MethodError for one that cannot be traced."""
+        from .heyoka_events import heyoka_events
+
+        return heyoka_events(events, self.heyoka_taylor().nz, t0, z0)
+
+    def heyoka_integrator(self, tol: float, events: tuple = ()):
+        """``(taylor_adaptive, origin, order)``: heyoka's compiled integrator of the equations with ``events``,
+        loaded from the on-disk cache when an authenticated entry exists (:func:`lagrange.codegen.heyoka_jit.
+        integrator`)."""
+        from .heyoka_jit import integrator
+
+        return integrator(self.equations, self.heyoka_taylor(), tol, events)
+
     # -- what integration needs besides rhs: generated here on request (lagrange.integrate imports this type
     #    and nothing else from codegen; see lagrange/integrate/__init__.py) --
 
