@@ -27,6 +27,8 @@ import pickle
 from functools import lru_cache
 from pathlib import Path
 
+import numpy as np
+
 from ..errors import CacheError
 from .cache import cache_dir, read_verified, write_sealed
 from .derivation_cache import enabled, environment, equations_fingerprint, prune
@@ -51,9 +53,10 @@ def _cpu() -> str:
     return hashlib.sha256("\n".join(sorted(set(keep))).encode()).hexdigest()[:16]
 
 
-def cache_key(eqs, odes, tol: float, events: tuple[HeyokaEvent, ...]) -> str | None:
-    """The entry key of the integrator of ``odes`` (from ``eqs``) at ``tol`` with ``events`` (module
-    docstring), or None when the equations cannot be fingerprinted or the cache is off."""
+def cache_key(eqs, odes, tol: float, events: tuple[HeyokaEvent, ...], batch: int = 0) -> str | None:
+    """The entry key of the integrator of ``odes`` (from ``eqs``) at ``tol`` with ``events`` (``batch``: the
+    batch size of a ``taylor_adaptive_batch``, 0 for the scalar integrator; module docstring), or None when the
+    equations cannot be fingerprinted or the cache is off."""
     if not enabled():
         return None
     fingerprint = equations_fingerprint(eqs)
@@ -62,7 +65,7 @@ def cache_key(eqs, odes, tol: float, events: tuple[HeyokaEvent, ...]) -> str | N
     import heyoka as hy
 
     text = "\n".join([fingerprint, environment(), f"heyoka {hy.__version__}", f"cpu {_cpu()}", repr(float(tol)),
-                      f"compact {odes.compact}", f"pars {odes.n_params}", f"nz {odes.nz}",
+                      f"compact {odes.compact}", f"pars {odes.n_params}", f"nz {odes.nz}", f"batch {int(batch)}",
                       *(ev.key for ev in events)])
     return hashlib.sha256(text.encode()).hexdigest()
 
@@ -76,7 +79,7 @@ def _entry(key: str) -> Path | None:
         return None
 
 
-def _load(path: Path, key: str, hy, odes, n_events: int):
+def _load(path: Path, key: str, hy, odes, n_events: int, batch: int):
     """The integrator stored at ``path`` after it authenticated, or None."""
     data = read_verified(path)  # None unless the HMAC matched: nothing else is unpickled
     if data is None:
@@ -88,15 +91,18 @@ def _load(path: Path, key: str, hy, odes, n_events: int):
         ta = pickle.loads(payload)  # noqa: S301 - our own entry, authenticated (HMAC) above
     except Exception:  # noqa: BLE001 - an entry that does not load is rebuilt
         return None
-    if type(ta).__name__ != "taylor_adaptive_dbl" or len(ta.state) != odes.nz or len(ta.pars) < odes.n_params:
+    kind, shape = ("taylor_adaptive_batch_dbl", (odes.nz, batch)) if batch else ("taylor_adaptive_dbl", (odes.nz,))
+    if type(ta).__name__ != kind or tuple(ta.state.shape) != shape or len(ta.pars) < odes.n_params:
         return None
-    ok = (len(ta.nt_events) + len(ta.t_events) == n_events) if ta.with_events else n_events == 0
+    ok = (len(ta.nt_events) + len(ta.t_events) == n_events) if getattr(ta, "with_events", False) else n_events == 0
     return ta if ok else None
 
 
-def integrator(eqs, odes, tol: float, events: tuple[HeyokaEvent, ...] = ()) -> tuple[object, str, list]:
+def integrator(eqs, odes, tol: float, events: tuple[HeyokaEvent, ...] = (), batch: int = 0
+               ) -> tuple[object, str, list]:
     """A ``heyoka.taylor_adaptive`` for ``odes`` (:func:`lagrange.codegen.heyoka_expr.heyoka_odes` of ``eqs``) at
-    tolerance ``tol`` with ``events``; its time, state and parameters are placeholders for the caller to set.
+    tolerance ``tol`` with ``events`` — or, with ``batch`` > 0, a ``heyoka.taylor_adaptive_batch`` of that batch
+    size (SIMD lanes; no events); its time, state and parameters are placeholders for the caller to set.
 
     Returns
     -------
@@ -117,15 +123,26 @@ def integrator(eqs, odes, tol: float, events: tuple[HeyokaEvent, ...] = ()) -> t
         kind = "t" if ev.terminal else "nt"
         order.append((kind, counts[kind]))
         counts[kind] += 1
-    key = cache_key(eqs, odes, tol, events)
+    if batch and events:
+        raise ValueError("heyoka's batch integrators are built without events here")
+    key = cache_key(eqs, odes, tol, events, batch)
     path = _entry(key) if key is not None else None
     if path is not None:
-        ta = _load(path, key, hy, odes, len(events))
+        ta = _load(path, key, hy, odes, len(events), batch)
         if ta is not None:
             return ta, "disk", order
+    if batch:
+        ta = hy.taylor_adaptive_batch(odes.system, np.zeros((odes.nz, batch)), tol=tol,
+                                      pars=np.zeros((odes.n_params, batch)), compact_mode=odes.compact)
+        return _store(ta, path, key), "compiled", order
     nt, te, _ = to_heyoka(events, hy)
     ta = hy.taylor_adaptive(odes.system, [0.0] * odes.nz, tol=tol, pars=[0.0] * odes.n_params,
                             compact_mode=odes.compact, nt_events=nt, t_events=te)
+    return _store(ta, path, key), "compiled", order
+
+
+def _store(ta, path: Path | None, key: str | None):
+    """Write ``ta`` to its sealed entry (when the cache is on); returns ``ta``."""
     if path is not None:
         try:
             payload = pickle.dumps(ta, protocol=pickle.HIGHEST_PROTOCOL)
@@ -135,4 +152,4 @@ def integrator(eqs, odes, tol: float, events: tuple[HeyokaEvent, ...] = ()) -> t
             raise
         except OSError:  # a cache that cannot be written only costs time
             pass
-    return ta, "compiled", order
+    return ta

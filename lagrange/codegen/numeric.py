@@ -383,13 +383,13 @@ class NumericModel:
 
         return heyoka_events(events, self.heyoka_taylor().nz, t0, z0)
 
-    def heyoka_integrator(self, tol: float, events: tuple = ()):
-        """``(taylor_adaptive, origin, order)``: heyoka's compiled integrator of the equations with ``events``,
-        loaded from the on-disk cache when an authenticated entry exists (:func:`lagrange.codegen.heyoka_jit.
-        integrator`)."""
+    def heyoka_integrator(self, tol: float, events: tuple = (), batch: int = 0):
+        """``(taylor_adaptive, origin, order)``: heyoka's compiled integrator of the equations with ``events``
+        (``batch`` > 0: a ``taylor_adaptive_batch`` of that size), loaded from the on-disk cache when an
+        authenticated entry exists (:func:`lagrange.codegen.heyoka_jit.integrator`)."""
         from .heyoka_jit import integrator
 
-        return integrator(self.equations, self.heyoka_taylor(), tol, events)
+        return integrator(self.equations, self.heyoka_taylor(), tol, events, batch)
 
     # -- what integration needs besides rhs: generated here on request (lagrange.integrate imports this type
     #    and nothing else from codegen; see lagrange/integrate/__init__.py) --
