@@ -14,10 +14,12 @@ with :class:`~lagrange.errors.CacheError`, as for every entry of the cache.
 The key is a SHA-256 of everything the compiled code depends on: the equations' fingerprint
 (:func:`lagrange.codegen.derivation_cache.equations_fingerprint`), :func:`~lagrange.codegen.derivation_cache.
 environment` (lagrange's version and the hash of its code-generation sources, sympy, Python, the machine), the
-heyoka version, the host CPU (heyoka compiles for the native CPU), the tolerance, compact mode, the number of
-runtime parameters, and each event's expression, ``terminal`` and ``direction``. The state, time and parameter
-values are not in it: the caller resets them. ``LAGRANGE_DERIVATION_CACHE=0`` turns this cache off with the
-others.
+heyoka version, the host CPU (heyoka compiles for the native CPU), the tolerance, the batch size, and each
+event's expression, ``terminal`` and ``direction`` (compact mode, the state size and the runtime parameters
+follow from the equations and the sources). A hit needs neither the CSE nor the conversion to heyoka
+expressions: only the cheap checks of :func:`~lagrange.codegen.heyoka_expr.heyoka_shape` run. The state, time
+and parameter values are not in it: the caller resets them. ``LAGRANGE_DERIVATION_CACHE=0`` turns this cache
+off with the others.
 """
 
 from __future__ import annotations
@@ -33,6 +35,7 @@ from ..errors import CacheError
 from .cache import cache_dir, read_verified, write_sealed
 from .derivation_cache import enabled, environment, equations_fingerprint, prune
 from .heyoka_events import HeyokaEvent, to_heyoka
+from .heyoka_expr import heyoka_odes, heyoka_shape
 
 __all__ = ["integrator", "cache_key", "HEADER"]
 
@@ -53,8 +56,8 @@ def _cpu() -> str:
     return hashlib.sha256("\n".join(sorted(set(keep))).encode()).hexdigest()[:16]
 
 
-def cache_key(eqs, odes, tol: float, events: tuple[HeyokaEvent, ...], batch: int = 0) -> str | None:
-    """The entry key of the integrator of ``odes`` (from ``eqs``) at ``tol`` with ``events`` (``batch``: the
+def cache_key(eqs, tol: float, events: tuple[HeyokaEvent, ...], batch: int = 0) -> str | None:
+    """The entry key of the integrator of ``eqs`` at ``tol`` with ``events`` (``batch``: the
     batch size of a ``taylor_adaptive_batch``, 0 for the scalar integrator; module docstring), or None when the
     equations cannot be fingerprinted or the cache is off."""
     if not enabled():
@@ -65,7 +68,7 @@ def cache_key(eqs, odes, tol: float, events: tuple[HeyokaEvent, ...], batch: int
     import heyoka as hy
 
     text = "\n".join([fingerprint, environment(), f"heyoka {hy.__version__}", f"cpu {_cpu()}", repr(float(tol)),
-                      f"compact {odes.compact}", f"pars {odes.n_params}", f"nz {odes.nz}", f"batch {int(batch)}",
+                      f"batch {int(batch)}",
                       *(ev.key for ev in events)])
     return hashlib.sha256(text.encode()).hexdigest()
 
@@ -79,7 +82,7 @@ def _entry(key: str) -> Path | None:
         return None
 
 
-def _load(path: Path, key: str, hy, odes, n_events: int, batch: int):
+def _load(path: Path, key: str, hy, shape, n_events: int, batch: int):
     """The integrator stored at ``path`` after it authenticated, or None."""
     data = read_verified(path)  # None unless the HMAC matched: nothing else is unpickled
     if data is None:
@@ -91,16 +94,15 @@ def _load(path: Path, key: str, hy, odes, n_events: int, batch: int):
         ta = pickle.loads(payload)  # noqa: S301 - our own entry, authenticated (HMAC) above
     except Exception:  # noqa: BLE001 - an entry that does not load is rebuilt
         return None
-    kind, shape = ("taylor_adaptive_batch_dbl", (odes.nz, batch)) if batch else ("taylor_adaptive_dbl", (odes.nz,))
-    if type(ta).__name__ != kind or tuple(ta.state.shape) != shape or len(ta.pars) < odes.n_params:
+    kind, dims = ("taylor_adaptive_batch_dbl", (shape.nz, batch)) if batch else ("taylor_adaptive_dbl", (shape.nz,))
+    if type(ta).__name__ != kind or tuple(ta.state.shape) != dims or len(ta.pars) < shape.n_params:
         return None
     ok = (len(ta.nt_events) + len(ta.t_events) == n_events) if getattr(ta, "with_events", False) else n_events == 0
     return ta if ok else None
 
 
-def integrator(eqs, odes, tol: float, events: tuple[HeyokaEvent, ...] = (), batch: int = 0
-               ) -> tuple[object, str, list]:
-    """A ``heyoka.taylor_adaptive`` for ``odes`` (:func:`lagrange.codegen.heyoka_expr.heyoka_odes` of ``eqs``) at
+def integrator(eqs, tol: float, events: tuple[HeyokaEvent, ...] = (), batch: int = 0) -> tuple[object, str, list]:
+    """A ``heyoka.taylor_adaptive`` for :func:`lagrange.codegen.heyoka_expr.heyoka_odes` of ``eqs`` at
     tolerance ``tol`` with ``events`` — or, with ``batch`` > 0, a ``heyoka.taylor_adaptive_batch`` of that batch
     size (SIMD lanes; no events); its time, state and parameters are placeholders for the caller to set.
 
@@ -125,12 +127,14 @@ def integrator(eqs, odes, tol: float, events: tuple[HeyokaEvent, ...] = (), batc
         counts[kind] += 1
     if batch and events:
         raise ValueError("heyoka's batch integrators are built without events here")
-    key = cache_key(eqs, odes, tol, events, batch)
+    shape = heyoka_shape(eqs)  # the refusals; an entry loaded from disk needs neither the CSE nor the conversion
+    key = cache_key(eqs, tol, events, batch)
     path = _entry(key) if key is not None else None
     if path is not None:
-        ta = _load(path, key, hy, odes, len(events), batch)
+        ta = _load(path, key, hy, shape, len(events), batch)
         if ta is not None:
             return ta, "disk", order
+    odes = heyoka_odes(eqs)
     if batch:
         ta = hy.taylor_adaptive_batch(odes.system, np.zeros((odes.nz, batch)), tol=tol,
                                       pars=np.zeros((odes.n_params, batch)), compact_mode=odes.compact)

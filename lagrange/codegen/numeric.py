@@ -376,12 +376,19 @@ class NumericModel:
 
         return heyoka_odes(self.equations)
 
+    def heyoka_shape(self):
+        """``n``, ``nz``, ``n_params`` of the heyoka system, after its refusals, without building it
+        (:func:`lagrange.codegen.heyoka_expr.heyoka_shape`)."""
+        from .heyoka_expr import heyoka_shape
+
+        return heyoka_shape(self.equations)
+
     def heyoka_events(self, events, t0: float, z0) -> tuple:
         """The user's event callables traced into heyoka events (:func:`lagrange.codegen.heyoka_events.
         heyoka_events`); MethodError for one that cannot be traced."""
         from .heyoka_events import heyoka_events
 
-        return heyoka_events(events, self.heyoka_taylor().nz, t0, z0)
+        return heyoka_events(events, self.heyoka_shape().nz, t0, z0)
 
     def heyoka_integrator(self, tol: float, events: tuple = (), batch: int = 0):
         """``(taylor_adaptive, origin, order)``: heyoka's compiled integrator of the equations with ``events``
@@ -389,7 +396,7 @@ class NumericModel:
         authenticated entry exists (:func:`lagrange.codegen.heyoka_jit.integrator`)."""
         from .heyoka_jit import integrator
 
-        return integrator(self.equations, self.heyoka_taylor(), tol, events, batch)
+        return integrator(self.equations, tol, events, batch)
 
     # -- what integration needs besides rhs: generated here on request (lagrange.integrate imports this type
     #    and nothing else from codegen; see lagrange/integrate/__init__.py) --

@@ -104,7 +104,7 @@ def integrate_heyoka(model: NumericModel, t_span, y0, t_eval, *, rtol: float, at
     if model.schedule is not None:
         raise InputError("method='heyoka' cannot follow time-varying inputs (the model has a schedule; constant "
                          "inputs are parameters): use method='DOP853' or another scipy method")
-    odes = model.heyoka_taylor()
+    odes = model.heyoka_shape()  # the system itself is built only when it must be compiled
     t0, t1 = float(t_span[0]), float(t_span[1])
     rtol, atol, max_step = float(rtol), float(atol), float(max_step)
     if not (rtol > 0 and math.isfinite(rtol)) or not (atol > 0 and math.isfinite(atol)):

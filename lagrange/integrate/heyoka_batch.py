@@ -79,7 +79,7 @@ def integrate_ensemble_heyoka(model: NumericModel, t0: float, t1: float, Y0: np.
     if model.m:
         raise MethodError("integrate_ensemble(method='heyoka') takes unconstrained models; use lagrange.sweep "
                           "for constrained systems")
-    odes = model.heyoka_taylor()
+    odes = model.heyoka_shape()  # the system itself is built only when it must be compiled
     rtol, atol = float(rtol), float(atol)
     if not (rtol > 0 and math.isfinite(rtol)) or not (atol > 0 and math.isfinite(atol)):
         raise ValueError(f"method='heyoka' needs finite rtol > 0 and atol > 0, got rtol={rtol}, atol={atol}")

@@ -1,6 +1,7 @@
 """heyoka's compiled integrators kept in the sealed on-disk cache (lagrange/codegen/heyoka_jit.py).
 
-A second process running the same model loads the integrator instead of compiling it (counted by
+A second process running the same model loads the integrator instead of compiling it (and without converting
+the equations to heyoka expressions; counted by
 ``heyoka_backend.compilations`` / ``disk_loads`` and said in the result's message) and gives the same numbers;
 an entry that fails authentication is never unpickled but rebuilt (CacheIntegrityWarning, the cache's policy),
 a cache directory others can write is refused with CacheError; events are part of the key.
@@ -29,10 +30,12 @@ ROOT = Path(__file__).resolve().parents[2]
 RUN = """
 import json
 from lagrange.examples import n_link_pendulum
+from lagrange.codegen import heyoka_expr
 from lagrange.integrate import heyoka_backend
 sol = n_link_pendulum(2).simulate(2.0, {"q1": 1.0, "q2": -0.5, "q1_dot": 0.0, "q2_dot": 0.3}, {"g": 9.81},
                                   method="heyoka", rtol=1e-12, atol=1e-12, n_points=5)
 print(json.dumps({"compiled": heyoka_backend.compilations(), "loaded": heyoka_backend.disk_loads(),
+                  "converted": len(heyoka_expr._ODES),
                   "message": sol.message, "y": sol.y[-1].tolist()}))
 """
 
@@ -48,10 +51,12 @@ def _fresh_process(cache: Path) -> dict:
 def test_a_fresh_process_loads_the_compiled_integrator_from_disk(tmp_path):
     cache = tmp_path / "cache"
     first = _fresh_process(cache)
-    assert (first["compiled"], first["loaded"]) == (1, 0) and "compiled by LLVM" in first["message"]
+    assert (first["compiled"], first["loaded"], first["converted"]) == (1, 0, 1)
+    assert "compiled by LLVM" in first["message"]
     assert len(list(cache.glob("heyoka_*.pkl"))) == 1
     second = _fresh_process(cache)
-    assert (second["compiled"], second["loaded"]) == (0, 1) and "loaded from the on-disk cache" in second["message"]
+    assert (second["compiled"], second["loaded"], second["converted"]) == (0, 1, 0)  # no CSE, no conversion
+    assert "loaded from the on-disk cache" in second["message"]
     assert second["y"] == first["y"]  # the same compiled code, bit for bit
 
 
