@@ -208,8 +208,9 @@ def cache_part(quick: bool, rounds: int | None) -> None:
              f"{heyoka.__version__}, {platform.machine()}, {os.cpu_count()} cores (shared, load average "
              f"{os.getloadavg()[0]:.0f}), {time.strftime('%Y-%m-%d %H:%M UTC', time.gmtime())}; {rounds} rounds "
              "interleaved (cold, warm_disk, direct); medians. Process: a new Python process, imports included "
-             "(wall from the parent, CPU = the child's user + system time). Call: the `simulate` call (or heyoka's "
-             "build + propagation) inside the child, imports and lagrange's derivation excluded. `direct 2nd`: "
+             "(wall from the parent, CPU = the child's user + system time). Call: inside the child, the `simulate` "
+             "call (it loads the derived equations and imports heyoka) or, for `direct`, heyoka's build + propagation "
+             "(heyoka imported and its equations derived before). `direct 2nd`: "
              "heyoka's second build of the same system in the same process (its in-memory cache).", "",
              "| system | tol | route | process wall s | process CPU s | call wall s | call CPU s | compiled/loaded |",
              "|---|---|---|---|---|---|---|---|"]
