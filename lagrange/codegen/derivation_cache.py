@@ -255,7 +255,8 @@ MAX_ENTRIES_VAR = "LAGRANGE_DERIVATION_CACHE_MAX"
 
 
 def prune(directory: Path, max_entries: int | None = None) -> int:
-    """Delete the least recently written entries (``derived_*.pkl``, ``source_*.txt``, ``*.numba``) beyond
+    """Delete the least recently written entries (``derived_*.pkl``, ``source_*.txt``, ``*.numba``,
+    ``heyoka_*.pkl``) beyond
     ``max_entries`` (default ``$LAGRANGE_DERIVATION_CACHE_MAX`` or 2000), down to 90 % of it; returns the
     number deleted. Called after every write (a cache miss), so the directory never grows without bound."""
     if max_entries is None:
@@ -264,7 +265,7 @@ def prune(directory: Path, max_entries: int | None = None) -> int:
         except ValueError:
             max_entries = 2000
     entries = []
-    for pattern in ("derived_*.pkl", "source_*.txt", "*.numba"):
+    for pattern in ("derived_*.pkl", "source_*.txt", "*.numba", "heyoka_*.pkl"):
         for path in directory.glob(pattern):
             try:
                 entries.append((path.stat().st_mtime, path))

@@ -31,12 +31,14 @@ from ..errors import BackendError
 from .cse import fuse
 from .tape import TapeError, _check_analytic
 
-__all__ = ["HeyokaODEs", "heyoka_odes", "heyoka_available", "COMPACT_OPS"]
+__all__ = ["HeyokaODEs", "HeyokaShape", "heyoka_odes", "heyoka_shape", "heyoka_available", "convert_expression",
+           "COMPACT_OPS"]
 
 #: systems whose fused expressions have more operations than this get heyoka's ``compact_mode`` (its LLVM
 #: compile time explodes otherwise: measured on the 5-link pendulum, 25 s default vs 1.7 s compact)
 COMPACT_OPS = 400
 _ODES: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
+_SHAPES: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
 
 
 def heyoka_available() -> bool:
@@ -55,6 +57,38 @@ class HeyokaODEs:
     nz: int
     n_params: int
     compact: bool
+
+
+@dataclass(frozen=True, eq=False)
+class HeyokaShape:
+    """What a run needs to know of the heyoka system without building it: ``n`` coordinates, ``nz`` state
+    size (2n, or 2n + 1 with the work integral), ``n_params`` runtime parameters."""
+
+    n: int
+    nz: int
+    n_params: int
+
+
+def heyoka_shape(eqs: Equations) -> HeyokaShape:
+    """The shape of :func:`heyoka_odes` of ``eqs``, after the same refusals, without the CSE and the conversion
+    (an integrator loaded from the on-disk cache needs no more; one per Equations).
+
+    Raises
+    ------
+    BackendError, TapeError
+        As :func:`heyoka_odes`.
+    """
+    if eqs in _SHAPES:
+        return _SHAPES[eqs]
+    if not heyoka_available():
+        raise BackendError('method="heyoka" needs heyoka.py: pip install "lagrange-dynamics[heyoka]"')
+    if eqs.m or eqs.is_rough:
+        raise TapeError(f"method='heyoka' integrates unconstrained systems (this one has {eqs.m} constraint(s) "
+                        "whose multipliers it cannot solve for): use method='DOP853' or another scipy method")
+    _check_analytic(eqs)
+    out = _SHAPES[eqs] = HeyokaShape(eqs.n, 2 * eqs.n + (0 if eqs.is_conservative else 1),
+                                     len(eqs.numeric_parameters))
+    return out
 
 
 def _convert(e, table: dict, hy):
@@ -127,6 +161,22 @@ def _solve(mass: dict, force: list, n: int, hy) -> list:
     return a
 
 
+def convert_expression(e: sp.Expr):
+    """``e``, a sympy expression over ``t`` and the state symbols ``y0 … y{nz-1}`` (``y{2n}`` the work
+    integral), as a heyoka expression over the variables of :func:`heyoka_odes`' system (an event)."""
+    import heyoka as hy
+
+    table: dict = {}
+    for s in e.free_symbols:
+        if s.name == "t":
+            table[s] = hy.time
+        elif s.name.startswith("y") and s.name[1:].isdigit():
+            table[s] = hy.make_vars(f"z{s.name[1:]}")
+        else:
+            raise TapeError(f"heyoka: the symbol {s} is not a state or time")
+    return _convert(e, table, hy)
+
+
 def heyoka_odes(eqs: Equations) -> HeyokaODEs:
     """The heyoka ODE system of ``eqs`` (module docstring), built once per Equations.
 
@@ -139,12 +189,7 @@ def heyoka_odes(eqs: Equations) -> HeyokaODEs:
     """
     if eqs in _ODES:
         return _ODES[eqs]
-    if not heyoka_available():
-        raise BackendError('method="heyoka" needs heyoka.py: pip install "lagrange-dynamics[heyoka]"')
-    if eqs.m or eqs.is_rough:
-        raise TapeError(f"method='heyoka' integrates unconstrained systems (this one has {eqs.m} constraint(s) "
-                        "whose multipliers it cannot solve for): use method='DOP853' or another scipy method")
-    _check_analytic(eqs)
+    heyoka_shape(eqs)  # the refusals
     import heyoka as hy
 
     n = eqs.n

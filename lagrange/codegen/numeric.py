@@ -376,6 +376,28 @@ class NumericModel:
 
         return heyoka_odes(self.equations)
 
+    def heyoka_shape(self):
+        """``n``, ``nz``, ``n_params`` of the heyoka system, after its refusals, without building it
+        (:func:`lagrange.codegen.heyoka_expr.heyoka_shape`)."""
+        from .heyoka_expr import heyoka_shape
+
+        return heyoka_shape(self.equations)
+
+    def heyoka_events(self, events, t0: float, z0) -> tuple:
+        """The user's event callables traced into heyoka events (:func:`lagrange.codegen.heyoka_events.
+        heyoka_events`); MethodError for one that cannot be traced."""
+        from .heyoka_events import heyoka_events
+
+        return heyoka_events(events, self.heyoka_shape().nz, t0, z0)
+
+    def heyoka_integrator(self, tol: float, events: tuple = (), batch: int = 0):
+        """``(taylor_adaptive, origin, order)``: heyoka's compiled integrator of the equations with ``events``
+        (``batch`` > 0: a ``taylor_adaptive_batch`` of that size), loaded from the on-disk cache when an
+        authenticated entry exists (:func:`lagrange.codegen.heyoka_jit.integrator`)."""
+        from .heyoka_jit import integrator
+
+        return integrator(self.equations, tol, events, batch)
+
     # -- what integration needs besides rhs: generated here on request (lagrange.integrate imports this type
     #    and nothing else from codegen; see lagrange/integrate/__init__.py) --
 

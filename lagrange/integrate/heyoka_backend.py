@@ -34,43 +34,57 @@ from ..errors import InputError, IntegrationError, IntegrationInterrupted
 from ..results.trajectory import Trajectory
 from .compiled import MAX_STEPS, check_output_times
 
-__all__ = ["integrate_heyoka", "compilations"]
+__all__ = ["integrate_heyoka", "compilations", "disk_loads"]
 
 #: output points per ``propagate_grid`` call (the outputs of finished chunks survive a Ctrl-C)
 CHUNK = 256
 
-#: the built integrators: HeyokaODEs -> {tolerance: (taylor_adaptive, lock)}
+#: the integrators in use: HeyokaODEs -> {(tolerance, events): (taylor_adaptive, lock, order)}
 _INTEGRATORS: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
 _GUARD = threading.Lock()
 _BUILDS = [0]
+_LOADS = [0]
 
 
 def compilations() -> int:
-    """How many heyoka integrators this process has built (JIT-compiled); a re-run of the same system at the
-    same tolerance, with other parameter values or initial state, builds none."""
+    """How many heyoka integrators this process has built (JIT-compiled with LLVM); a re-run of the same
+    system at the same tolerance and events, with other parameter values or initial state, builds none, and
+    neither does one whose integrator came from the on-disk cache (:func:`disk_loads`)."""
     return _BUILDS[0]
 
 
-def _integrator(odes, tol: float, t0: float, z0, pars):
-    """``(taylor_adaptive, lock)`` for ``odes`` at ``tol``, reset to ``t0``, ``z0`` and ``pars`` (built once)."""
-    import heyoka as hy
+def disk_loads() -> int:
+    """How many heyoka integrators this process has loaded from the on-disk cache instead of compiling
+    (:mod:`lagrange.codegen.heyoka_jit`)."""
+    return _LOADS[0]
 
+
+def _integrator(model: NumericModel, odes, tol: float, events: tuple):
+    """``(taylor_adaptive, lock, order, origin)`` for ``odes`` at ``tol`` with ``events``: kept in memory per
+    process, else from the on-disk cache, else compiled (``origin`` says which)."""
     with _GUARD:
         per_system = _INTEGRATORS.setdefault(odes, {})
-        entry = per_system.get(tol)
+        entry = per_system.get((tol, events))
+        origin = "memory"
         if entry is None:
-            ta = hy.taylor_adaptive(odes.system, [float(v) for v in z0], time=t0, tol=tol,
-                                    pars=[float(v) for v in pars], compact_mode=odes.compact)
-            _BUILDS[0] += 1
-            entry = per_system[tol] = (ta, threading.Lock())
-    return entry
+            ta, origin, order = model.heyoka_integrator(tol, events)
+            (_BUILDS if origin == "compiled" else _LOADS)[0] += 1
+            entry = per_system[tol, events] = (ta, threading.Lock(), order)
+    return (*entry, origin)
+
+
+_ORIGIN_TEXT = {"compiled": "integrator compiled by LLVM", "disk": "integrator loaded from the on-disk cache",
+                "memory": "integrator reused"}
 
 
 def integrate_heyoka(model: NumericModel, t_span, y0, t_eval, *, rtol: float, atol: float,
-                     max_step: float = np.inf, max_steps: int = MAX_STEPS, label: str | None = None) -> Trajectory:
+                     max_step: float = np.inf, max_steps: int = MAX_STEPS, label: str | None = None,
+                     events=()) -> Trajectory:
     """Integrate ``model`` from ``y0 = [q, q̇]`` at ``t_span[0]`` with heyoka (module docstring); outputs at
     ``t_eval`` (sorted in the direction of integration). Same signature as
-    :func:`lagrange.integrate.taylor.integrate_taylor`.
+    :func:`lagrange.integrate.taylor.integrate_taylor`, plus ``events``: scipy-style callables
+    ``event(t, y)`` (``terminal``, ``direction`` attributes), traced into heyoka events
+    (:mod:`lagrange.codegen.heyoka_events`); ``t_events`` / ``y_events`` of the result as scipy's.
 
     Raises
     ------
@@ -78,6 +92,8 @@ def integrate_heyoka(model: NumericModel, t_span, y0, t_eval, *, rtol: float, at
         heyoka is not installed (the message names the extra).
     TapeError
         Constraints or a non-analytic function in the equations (named).
+    MethodError
+        An event that cannot be traced into a heyoka expression (named, with the cause).
     InputError
         The model has time-varying inputs (a schedule), which heyoka cannot call.
     ValueError
@@ -88,7 +104,7 @@ def integrate_heyoka(model: NumericModel, t_span, y0, t_eval, *, rtol: float, at
     if model.schedule is not None:
         raise InputError("method='heyoka' cannot follow time-varying inputs (the model has a schedule; constant "
                          "inputs are parameters): use method='DOP853' or another scipy method")
-    odes = model.heyoka_taylor()
+    odes = model.heyoka_shape()  # the system itself is built only when it must be compiled
     t0, t1 = float(t_span[0]), float(t_span[1])
     rtol, atol, max_step = float(rtol), float(atol), float(max_step)
     if not (rtol > 0 and math.isfinite(rtol)) or not (atol > 0 and math.isfinite(atol)):
@@ -98,15 +114,32 @@ def integrate_heyoka(model: NumericModel, t_span, y0, t_eval, *, rtol: float, at
     t_eval = check_output_times(t_eval, t0, t1)
     y0 = np.asarray(y0, dtype=float)
     z0 = y0 if odes.nz == y0.size else np.append(y0, 0.0)
+    traced = model.heyoka_events(list(events), t0, z0) if events else ()
     import heyoka as hy
 
-    ta, lock = _integrator(odes, max(min(rtol, atol), 2.0**-52), t0, z0, model.params)
+    ta, lock, order, origin = _integrator(model, odes, max(min(rtol, atol), 2.0**-52), traced)
     with lock:  # one run at a time on a shared integrator (threads of a sweep take turns)
         ta.time = t0
         ta.state[:] = z0
         if odes.n_params:
             ta.pars[:] = np.asarray(model.params, dtype=float)
-        return _propagate(ta, hy, odes, model, t0, t1, y0, t_eval, max_step, max_steps, label)
+        recorders = [(ta.t_events if kind == "t" else ta.nt_events)[i].callback for kind, i in order]
+        for rec in recorders:
+            rec.records.clear()
+        if recorders:
+            ta.reset_cooldowns()
+        return _propagate(ta, hy, odes, model, t0, t1, y0, t_eval, max_step, max_steps, label, recorders,
+                          _ORIGIN_TEXT[origin])
+
+
+def _event_results(recorders, n2: int, direction: float) -> tuple[list, list]:
+    """scipy's ``t_events`` and ``y_events`` (states ``[q, q̇]``) from the recorders, in the order of time."""
+    t_events, y_events = [], []
+    for rec in recorders:
+        rows = sorted(rec.records, key=lambda r: direction * r[0])
+        t_events.append(np.array([r[0] for r in rows], dtype=float))
+        y_events.append(np.array([r[1][:n2] for r in rows], dtype=float).reshape(len(rows), n2))
+    return t_events, y_events
 
 
 def _tick(ta) -> bool:
@@ -115,8 +148,15 @@ def _tick(ta) -> bool:
     return True
 
 
-def _propagate(ta, hy, odes, model, t0, t1, y0, t_eval, max_step, max_steps, label) -> Trajectory:
-    """The run itself on the reset integrator ``ta``."""
+def _terminal_stop(outcome) -> bool:
+    """Whether heyoka's ``outcome`` is a terminal event (its value is the event's index ``i`` or ``-i-1``;
+    the other outcomes are the values below ``-2**32``)."""
+    return int(outcome.value) > -(2**32)
+
+
+def _propagate(ta, hy, odes, model, t0, t1, y0, t_eval, max_step, max_steps, label, recorders=(),
+               origin: str = "") -> Trajectory:
+    """The run itself on the reset integrator ``ta``; ``recorders``: the user events' callbacks, in order."""
     grid = t_eval if t_eval.size and t_eval[0] == t0 else np.concatenate([[t0], t_eval])
     skip = grid.size - t_eval.size
     kw = {"max_steps": int(max_steps)}
@@ -147,24 +187,27 @@ def _propagate(ta, hy, odes, model, t0, t1, y0, t_eval, max_step, max_steps, lab
             f"({Y.shape[0]} output points) is in the exception's `partial` attribute.", t=float(ta.time),
             state=dict(zip(coords, state[:n2])), partial=partial) from exc
     Y = np.concatenate(rows)[skip:]
+    direction = 1.0 if t1 >= t0 else -1.0
     if outcome == hy.taylor_outcome.time_limit and ta.time != t1:  # t_eval ends before t1
         res = ta.propagate_until(t1, **kw)
         outcome, steps = res[0], steps + int(res[3])
-    direction = 1.0 if t1 >= t0 else -1.0
     Y = Y.reshape(-1, odes.nz)  # after a failure heyoka returns only the rows it reached
     reached = (direction * (t_eval[: Y.shape[0]] - ta.time) <= 0) & np.all(np.isfinite(Y), axis=1)
     n_out = int(np.argmin(reached)) if not reached.all() else Y.shape[0]
     Y = Y[:n_out]
     n2 = 2 * odes.n
-    ok = outcome == hy.taylor_outcome.time_limit and ta.time == t1 and n_out == t_eval.size
+    stopped = _terminal_stop(outcome) and bool(np.all(np.isfinite(np.asarray(ta.state))))
+    ok = stopped or (outcome == hy.taylor_outcome.time_limit and ta.time == t1 and n_out == t_eval.size)
     order = int(ta.order)
-    message = ("The solver successfully reached the end of the integration interval." if ok else
+    message = ("A termination event occurred." if stopped else
+               "The solver successfully reached the end of the integration interval." if ok else
                f"heyoka stopped at t={ta.time:.9g}: {outcome.name}")
-    message += f" ({steps} heyoka Taylor steps of order {order})"
+    message += f" ({steps} heyoka Taylor steps of order {order}{'; ' + origin if origin else ''})"
+    t_events, y_events = _event_results(recorders, n2, direction)
     traj = Trajectory(t=t_eval[:n_out].copy(), y=Y[:, :n2].copy(), model=model,
                       method=label or f"heyoka (taylor_adaptive, order {order})", success=ok, message=message,
                       nfev=int(steps) * order, work=None if odes.nz == n2 else Y[:, n2].copy(),
-                      initial=(t0, y0.copy()))
+                      initial=(t0, y0.copy()), t_events=t_events, y_events=y_events)
     if ok:
         return traj
     coords = model.equations.coordinates

@@ -1,6 +1,7 @@
 """The run function of ``method="heyoka"`` (registry entry in :mod:`lagrange.integrate.registry`): model, initial
-state, then :func:`lagrange.integrate.heyoka_backend.integrate_heyoka` as it is. The registry has already refused
-events, constraints, friction switches and time-varying inputs; constant inputs are runtime parameters of the
+state, then :func:`lagrange.integrate.heyoka_backend.integrate_heyoka` as it is, with the user's events (traced into
+heyoka events; one that cannot be traced is a MethodError naming it). The registry has already refused
+constraints, friction switches and time-varying inputs; constant inputs are runtime parameters of the
 heyoka system (bound by name like every parameter, so a second run with other values reuses the compiled
 integrator)."""
 
@@ -24,7 +25,7 @@ def heyoka_available() -> bool:
 
 
 def precheck(eqs) -> None:
-    """Refuse before any work when heyoka is missing (BackendError naming the extra). Constraints, events,
+    """Refuse before any work when heyoka is missing (BackendError naming the extra). Constraints,
     friction switches and time-varying inputs are refused by the registry (naming the methods that support
     them); a non-analytic function left in the equations by the conversion (TapeError, named)."""
     if not heyoka_available():
@@ -38,7 +39,7 @@ def run(req: RunRequest) -> Trajectory:
     model, t_eval = constant_input_run(req, "method='heyoka' (its runtime parameters hold constants only)")
     try:
         return integrate_heyoka(model, req.t_span, req.y0, t_eval, rtol=req.rtol, atol=req.atol,
-                                max_step=req.max_step, label="heyoka (taylor_adaptive, LLVM)")
+                                max_step=req.max_step, label="heyoka (taylor_adaptive, LLVM)", events=req.events)
     except ValueError as exc:
         if isinstance(exc, LagrangeError):
             raise

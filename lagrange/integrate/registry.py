@@ -118,7 +118,7 @@ METHODS: tuple[Method, ...] = (
            rough=False, varying_inputs=False, loops=("C", "numba"), precheck="lagrange.integrate.taylor_run:precheck"),
     Method("heyoka", "Taylor series", "adaptive", "lagrange.integrate.heyoka_run:run",
            'heyoka.py\'s LLVM-compiled Taylor method on the derived equations; pip install '
-           '"lagrange-dynamics[heyoka]"', events=False, holonomic=False, nonholonomic=False, projection=False,
+           '"lagrange-dynamics[heyoka]"', holonomic=False, nonholonomic=False, projection=False,
            friction_switches=False, rough=False, varying_inputs=False, loops=("LLVM",),
            precheck="lagrange.integrate.heyoka_run:precheck"),
     Method("midpoint", order="2", summary="implicit midpoint rule, symplectic", aliases=("implicit_midpoint",),

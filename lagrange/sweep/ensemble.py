@@ -189,7 +189,9 @@ def integrate_ensemble(model, t_span, Y0, P=None, *, method: str = "DOP853", rto
     Y0 : ndarray, shape (k, 2n) or (2n,) — initial states ``[q, q̇]``
     P : None (the model's parameters for all) or ndarray, shape (k, len(model.params)) in the order of
         ``model.equations.numeric_parameters``
-    method : ``"DOP853"`` (default), ``"RK45"`` or ``"RK23"``
+    method : ``"DOP853"`` (default), ``"RK45"`` or ``"RK23"``; or ``"heyoka"``: heyoka's Taylor method in
+        batch mode, the members in SIMD lanes (:mod:`lagrange.integrate.heyoka_batch`; analytic models,
+        ``pip install "lagrange-dynamics[heyoka]"``)
     rtol, atol, max_step : as in :func:`scipy.integrate.solve_ivp`
     t_eval : output times (monotone in the direction of integration); default ``n_points`` equally spaced
 
@@ -206,12 +208,12 @@ def integrate_ensemble(model, t_span, Y0, P=None, *, method: str = "DOP853", rto
     >>> np.round(res.y[:, -1, 0], 8).tolist()       # x(π) = cos(√k π)·x0
     [-1.0, 2.0]
     """
-    if method not in METHODS:
-        raise TypeError(f"method must be one of {', '.join(METHODS)}, got {method!r}")
+    if method not in METHODS and method != "heyoka":
+        raise TypeError(f"method must be one of {', '.join(METHODS)} or heyoka, got {method!r}")
     if model.m:
         raise TypeError("integrate_ensemble takes unconstrained models (constraint drift needs projection): "
                         "use lagrange.sweep for constrained systems")
-    scheme = METHODS[method]
+    scheme = METHODS.get(method)
     t0, t1 = (0.0, float(t_span)) if np.ndim(t_span) == 0 else (float(t_span[0]), float(t_span[1]))
     if t1 == t0:
         raise IntegrationError(f"t_span must be two different times, got {t_span}")
@@ -226,6 +228,12 @@ def integrate_ensemble(model, t_span, Y0, P=None, *, method: str = "DOP853", rto
     if np.any(direction * np.diff(t_eval) < 0) or np.any(direction * (t_eval - t0) < 0) or \
             np.any(direction * (t_eval - t1) > 0):
         raise IntegrationError("t_eval must be sorted in the direction of integration and lie within t_span")
+    if method == "heyoka":  # heyoka's batch mode: lagrange/integrate/heyoka_batch.py
+        from ..integrate.heyoka_batch import integrate_ensemble_heyoka
+
+        *fields, label = integrate_ensemble_heyoka(model, t0, t1, Y0, P, t_eval, rtol=rtol, atol=atol,
+                                                   max_step=max_step)
+        return EnsembleResult(t_eval, *fields, label)
     mem = _Members(model, Y0, P, t0)
     out = np.full((k, len(t_eval), Y0.shape[1]), np.nan)
     try:
