@@ -25,7 +25,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.integrate import DOP853, RK23, RK45
 
-from ..errors import IntegrationError, LagrangeError
+from ..errors import IntegrationError, LagrangeError, MethodError
 
 __all__ = ["integrate_ensemble", "EnsembleResult", "METHODS"]
 
@@ -209,10 +209,10 @@ def integrate_ensemble(model, t_span, Y0, P=None, *, method: str = "DOP853", rto
     [-1.0, 2.0]
     """
     if method not in METHODS and method != "heyoka":
-        raise TypeError(f"method must be one of {', '.join(METHODS)} or heyoka, got {method!r}")
+        raise MethodError(f"integrate_ensemble: method must be one of {', '.join(METHODS)} or heyoka, got {method!r}")
     if model.m:
-        raise TypeError("integrate_ensemble takes unconstrained models (constraint drift needs projection): "
-                        "use lagrange.sweep for constrained systems")
+        raise MethodError("integrate_ensemble takes unconstrained models (constraint drift needs projection): "
+                         "use lagrange.sweep for constrained systems")
     scheme = METHODS.get(method)
     t0, t1 = (0.0, float(t_span)) if np.ndim(t_span) == 0 else (float(t_span[0]), float(t_span[1]))
     if t1 == t0:
