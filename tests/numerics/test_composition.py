@@ -61,6 +61,7 @@ def test_agrees_with_taylor_on_a_nonlinear_pendulum(method):
     assert np.log2(errs[0] / errs[1]) > ORDERS[method] - 1  # at least the order (pre-asymptotic: more)
 
 
+@pytest.mark.slow  # 210,000 steps of 9 or 15 stages each
 @pytest.mark.parametrize("method", ["verlet6", "verlet8"])
 def test_energy_bounded_over_10000_periods(method):
     """Symplectic: the pendulum's energy error stays bounded over 10,000 periods, no secular drift."""
