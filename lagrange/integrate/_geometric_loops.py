@@ -9,8 +9,10 @@ counts, info)``
 
 — ``steps`` fixed steps of size ``h`` from ``z = (q, p)``, recording ``[q, q̇]`` every ``stride``-th step
 and after the last. ``scheme`` is :data:`GAUSS` (Gauss–Legendre collocation with the tableau ``A, b, c``:
-implicit midpoint, GL4, GL6), :data:`VERLET` (Störmer–Verlet) or :data:`DG` (Gonzalez' midpoint discrete
-gradient). It returns a status of :data:`STATUS` (or :data:`PAUSED` at step ``k_stop``) and keeps everything
+implicit midpoint, GL4, GL6), :data:`VERLET` (Störmer–Verlet), :data:`DG` (Gonzalez' midpoint discrete
+gradient) or :data:`COMPOSE` (a symmetric composition of Störmer–Verlet steps of sizes ``b_i h``, the
+coefficients in ``b``: :mod:`lagrange.integrate.composition`). It returns a status of :data:`STATUS` (or
+:data:`PAUSED` at step ``k_stop``) and keeps everything
 else in the arrays passed in, updated in place: the state ``z`` (before the failed step, or the final
 state), the recorded times and states ``T[:n_out]``, ``Y[:n_out]`` (on failure the state before the failed
 step is the last row), ``counts = [step reached (the failed one when the status is not 0), n_out, total
@@ -44,7 +46,7 @@ MASS = types.boolean(types.float64, _VEC, _VEC, _MAT, _VEC)
 LAGRANGIAN = types.float64(types.float64, _VEC, _VEC, _VEC, _VEC)
 SECOND = types.boolean(types.float64, _VEC, _VEC, _VEC, _MAT, _MAT)
 
-GAUSS, VERLET, DG = 0, 1, 2
+GAUSS, VERLET, DG, COMPOSE = 0, 1, 2, 3
 #: status codes: 0 success, then the ways a step fails
 STATUS = ("success", "Newton did not converge", "Newton diverged (non-finite residual)", "singular Jacobian",
           "mass matrix not positive definite", "non-finite state")
@@ -282,6 +284,35 @@ def _verlet_step(mass, lagrangian, t, z, h, p, n, w, znew):
 
 
 @njit(**_OPTIONS)
+def _compose_step(mass, lagrangian, t, z, h, gam, p, n, w, znew):
+    """Störmer–Verlet steps of sizes ``γ_i h`` in turn (M constant): the force after one stage's drift is the
+    force of the next stage's first half kick, so a stage costs one ∇V and one ``M⁻¹p``."""
+    q, v, M, b, Lq, g, Lqq, Lqv, W, x = w
+    for j in range(2 * n):
+        znew[j] = z[j]
+    ok, _ = _grad(mass, lagrangian, t, znew, p, n, q, v, M, b, Lq, g)
+    if not ok:
+        return SINGULAR_MASS, 0, 0.0
+    tau = t
+    for i in range(gam.size):
+        a = gam[i] * h
+        for j in range(n):
+            znew[n + j] -= 0.5 * a * g[j]
+        ok, _ = _grad(mass, lagrangian, tau, znew, p, n, q, v, M, b, Lq, g)
+        if not ok:
+            return SINGULAR_MASS, 0, 0.0
+        for j in range(n):
+            znew[j] += a * g[n + j]
+        tau += a
+        ok, _ = _grad(mass, lagrangian, tau, znew, p, n, q, v, M, b, Lq, g)
+        if not ok:
+            return SINGULAR_MASS, 0, 0.0
+        for j in range(n):
+            znew[n + j] -= 0.5 * a * g[j]
+    return OK, 0, 0.0
+
+
+@njit(**_OPTIONS)
 def _dg_step(mass, lagrangian, second, t, z, h, p, n, tol, max_iter, w, zm, d, R, Jac, Jf, znew):
     """Gonzalez' discrete gradient ``z₁ = z₀ + h 𝕁 ∇̄H(z₀, z₁)`` by Newton with the midpoint Jacobian."""
     q, v, M, b, Lq, g, Lqq, Lqv, W, x = w
@@ -376,6 +407,8 @@ def run(scheme, mass, lagrangian, second, A, bb, c, t0, h, steps, stride, p, tol
                                              Ys, R, Jac, Jf, znew)
         elif scheme == VERLET:
             status, its, rnorm = _verlet_step(mass, lagrangian, tk, z, h, p, n, w, znew)
+        elif scheme == COMPOSE:
+            status, its, rnorm = _compose_step(mass, lagrangian, tk, z, h, bb, p, n, w, znew)
         else:
             status, its, rnorm = _dg_step(mass, lagrangian, second, tk, z, h, p, n, tol, max_iter, w, zm, d, R, Jac,
                                           Jf, znew)

@@ -18,6 +18,7 @@ from ..errors import IntegrationError, IntegrationInterrupted
 from ..model.coordinates import coordinate_name
 from ..results.trajectory import Trajectory
 from .base import diverged, non_finite_state, not_converged, singular_jacobian, step_prefix
+from .composition import KahanLi6, McLachlan8, _Composition
 from .discrete_gradient import DiscreteGradient
 from .gauss_legendre import TABLEAUX, GaussLegendre4, GaussLegendre6, ImplicitMidpoint, _Gauss
 from .stormer_verlet import StormerVerlet
@@ -30,7 +31,7 @@ SINGULAR_MASS = ("the mass matrix is singular (or not positive definite) at a po
 
 #: name → scheme
 GEOMETRIC = {cls.name: cls for cls in (ImplicitMidpoint, GaussLegendre4, GaussLegendre6, StormerVerlet,
-                                       DiscreteGradient)}
+                                       DiscreteGradient, KahanLi6, McLachlan8)}
 
 
 def fixed_loop(loop: str, *, backend: str, model=None) -> bool:
@@ -153,6 +154,8 @@ def _run_compiled(hm, scheme, t0, h, steps, stride, y0, where) -> tuple[np.ndarr
     z = np.concatenate([q0, p0])  # the loop's state, updated in place chunk by chunk
     if isinstance(scheme, _Gauss):
         code, (A, b, c) = k.GAUSS, TABLEAUX[scheme.stages]
+    elif isinstance(scheme, _Composition):  # the coefficients γ_i travel in b
+        code, A, b, c = k.COMPOSE, np.zeros((0, 0)), scheme.gammas, np.zeros(0)
     else:
         code, A, b, c = (k.VERLET if isinstance(scheme, StormerVerlet) else k.DG), np.zeros((0, 0)), np.zeros(0), \
             np.zeros(0)

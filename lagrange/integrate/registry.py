@@ -129,6 +129,10 @@ METHODS: tuple[Method, ...] = (
            aliases=("stormer_verlet",), **_GEOMETRIC),
     Method("dg", order="2", summary="discrete gradient: energy conserved to the Newton tolerance",
            aliases=("discrete_gradient",), **_GEOMETRIC),
+    Method("verlet6", order="6", summary="Kahan-Li 9-stage composition of Stormer-Verlet, symplectic; constant M "
+           "and V(q)", aliases=("kahan_li6",), **_GEOMETRIC),
+    Method("verlet8", order="8", summary="McLachlan 15-stage composition of Stormer-Verlet, symplectic; constant M "
+           "and V(q)", aliases=("mclachlan8",), **_GEOMETRIC),
 )
 
 _BY_NAME = {key.lower(): m for m in METHODS for key in (m.name, *m.aliases)}
