@@ -24,6 +24,7 @@ from __future__ import annotations
 
 import importlib.util
 import math
+import weakref
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field, replace
 from functools import cached_property
@@ -678,9 +679,20 @@ def _numba_many(rhs: Callable, n2: int) -> Callable:
     return import_module(name, path).rhs_many
 
 
+_COLUMNS: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
+
+
 def _numba_columns(eqs: Equations, n_params: int) -> tuple[Callable, int]:
     """The vectorized column kernel of an unconstrained model and its scratch rows
-    (:mod:`lagrange.codegen.batch_source`), compiled and cached on disk like ``rhs``."""
+    (:mod:`lagrange.codegen.batch_source`), compiled and cached on disk like ``rhs``; remembered per
+    equations, so models made by ``with_params`` share it."""
+    memo = _COLUMNS.setdefault(eqs, {})
+    if n_params not in memo:
+        memo[n_params] = _build_columns(eqs, n_params)
+    return memo[n_params]
+
+
+def _build_columns(eqs: Equations, n_params: int) -> tuple[Callable, int]:
     from .batch_source import KERNEL, columns_source
     from .derivation_cache import cached_source
     from .numba_backend import load_cached
