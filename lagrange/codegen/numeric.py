@@ -24,6 +24,7 @@ from __future__ import annotations
 
 import importlib.util
 import math
+import weakref
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field, replace
 from functools import cached_property
@@ -198,28 +199,65 @@ class NumericModel:
             return self.schedule.many(t, Y)
         return np.broadcast_to(self.params[k0:k0 + k], (len(t), k)).copy()
 
-    def rhs_many(self, t, Y, P=None) -> np.ndarray:
-        """``dy/dt`` for many states (and parameter sets) at once, row by row.
+    def rhs_many(self, t, Y, P=None, *, columns: bool = False) -> np.ndarray:
+        """``dy/dt`` for many states (and parameter sets) at once.
 
         Parameters
         ----------
-        t : float or ndarray, shape (k,) — one time, or one time per row
-        Y : ndarray, shape (k, 2n) — states ``[q, q̇]`` in rows
-        P : None (the bound parameters for every row) or ndarray, shape (k, len(params))
+        t : float or ndarray, shape (k,) — one time, or one time per member
+        Y : ndarray, shape (k, 2n) — states ``[q, q̇]`` in rows; with ``columns=True`` shape (2n, k), one
+            member per column (each variable contiguous: the layout of the compiled kernel, no transposes)
+        P : None (the bound parameters for every member) or ndarray, shape (k, len(params)); with
+            ``columns=True`` shape (len(params), k)
+        columns : bool — the layout of ``Y``, ``P`` and the result (default False: rows)
 
         Returns
         -------
-        ndarray, shape (k, 2n): row i is ``rhs(t[i], Y[i], P[i])`` (λ dropped with constraints). The numba
-        backend runs the loop over rows compiled; the others loop in Python.
+        ndarray, shape (k, 2n) (``columns=True``: (2n, k)): member i is ``rhs(t[i], Y[i], P[i])`` (λ dropped
+        with constraints), the same numbers as the per-member ``rhs``. With the numba backend an unconstrained
+        model without time-varying inputs runs one compiled loop over the members, vectorized across them
+        (:mod:`lagrange.codegen.batch_source`); a constrained model runs a compiled loop calling ``rhs`` per
+        member; the other backends loop in Python.
 
         Raises
         ------
         ValueError
             Shapes that do not match the model.
         SingularMassMatrixError
-            A row at which the mass matrix is singular (the row's state is named).
+            A member at which the mass matrix is singular (the member's state is named).
         """
+        if columns:
+            Yc, Pc, tt = self._column_arguments(t, Y, P)
+            if self._has_column_kernel:
+                out = self._run_columns(tt, Yc, Pc)
+                if out is not None:
+                    return out
+            return np.ascontiguousarray(self._rows_many(tt, np.ascontiguousarray(Yc.T),
+                                                        np.ascontiguousarray(Pc.T)).T)
         Y, P, tt = self._many_arguments(t, Y, P)
+        if self._has_column_kernel:
+            out = self._run_columns(tt, np.ascontiguousarray(Y.T), np.ascontiguousarray(P.T))
+            if out is not None:
+                return np.ascontiguousarray(out.T)
+        return self._rows_many(tt, Y, P)
+
+    @property
+    def _has_column_kernel(self) -> bool:
+        return self.backend == "numba" and self.schedule is None and not self.equations.m
+
+    def _run_columns(self, tt, Yc, Pc):
+        """The vectorized kernel's result, shape (2n, k), or None when a member's mass matrix failed the
+        pivot test or a result is not finite (the caller re-runs member by member: same numbers or the
+        per-member error)."""
+        kernel, n_calls = self._column_kernel
+        k = Yc.shape[1]
+        out = np.empty((2 * self.n, k))
+        bad = kernel(tt, Yc, Pc, tuple(out), np.empty((max(n_calls, 1), k)))
+        if bad or not np.isfinite(out).all():
+            return None
+        return out
+
+    def _rows_many(self, tt, Y, P) -> np.ndarray:
         n2 = 2 * self.n
         if self.backend == "numba" and self.schedule is None:
             try:
@@ -248,9 +286,28 @@ class NumericModel:
         tt = np.ascontiguousarray(np.broadcast_to(np.asarray(t, dtype=float), (k,)))
         return Y, np.ascontiguousarray(P), tt
 
+    def _column_arguments(self, t, Y, P):
+        Y = np.ascontiguousarray(Y, dtype=float)
+        height, k = Y.shape if Y.ndim == 2 else (-1, 0)
+        if height != 2 * self.n:
+            raise ValueError(f"with columns=True, Y must have shape ({2 * self.n}, k) (columns [q, q_dot]), "
+                             f"got {np.shape(Y)}")
+        kp = len(self.params)
+        P = np.broadcast_to(self.params[:, None], (kp, k)) if P is None else np.asarray(P, dtype=float)
+        if P.shape != (kp, k):
+            raise ValueError(f"with columns=True, P must have shape ({kp}, {k}) (one parameter vector per column "
+                             f"of Y, rows in the order {', '.join(s.name for s in self.equations.numeric_parameters)}"
+                             f"), got {P.shape}")
+        tt = np.ascontiguousarray(np.broadcast_to(np.asarray(t, dtype=float), (k,)))
+        return Y, np.ascontiguousarray(P), tt
+
     @cached_property
     def _compiled_many(self) -> Callable:
         return _numba_many(self.dynamics, 2 * self.n)
+
+    @cached_property
+    def _column_kernel(self) -> tuple[Callable, int]:
+        return _numba_columns(self.equations, len(self.params))
 
     def multipliers(self, t: float, y: np.ndarray) -> np.ndarray:
         """λ at ``(t, y)``, shape (m,): ``Aᵀλ`` is the generalized force of the constraints."""
@@ -642,6 +699,36 @@ def _numba_many(rhs: Callable, n2: int) -> Callable:
 
     name, path = write_module("many", _MANY.format(module=rhs.py_func.__module__, n2=n2))
     return import_module(name, path).rhs_many
+
+
+_COLUMNS: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
+
+
+def _numba_columns(eqs: Equations, n_params: int) -> tuple[Callable, int]:
+    """The vectorized column kernel of an unconstrained model and its scratch rows
+    (:mod:`lagrange.codegen.batch_source`), compiled and cached on disk like ``rhs``; remembered per
+    equations, so models made by ``with_params`` share it."""
+    memo = _COLUMNS.setdefault(eqs, {})
+    if n_params not in memo:
+        memo[n_params] = _build_columns(eqs, n_params)
+    return memo[n_params]
+
+
+def _build_columns(eqs: Equations, n_params: int) -> tuple[Callable, int]:
+    from .batch_source import KERNEL, columns_source
+    from .derivation_cache import cached_source
+    from .numba_backend import load_cached
+
+    def generate() -> str:
+        src, n_calls = columns_source(fuse(eqs)[0], n_params=n_params)
+        return (f"N_CALLS = {n_calls}\n\n\n@numba.njit(cache=True, error_model='numpy', "
+                f"pipeline_class=NoAliasCompiler)\n{src}")
+
+    text = ("import math\nimport numpy as np\nimport numba\n"
+            "from lagrange.codegen.noalias import NoAliasCompiler\n\n") + cached_source(
+        eqs, f"columns kernel; n_params {n_params}", generate)
+    module = load_cached("columns", text, "the vectorized rhs_many kernel")
+    return getattr(module, KERNEL), module.N_CALLS
 
 
 def _scheduled(raw: Callable, schedule, eqs: Equations, backend: str) -> Callable:
