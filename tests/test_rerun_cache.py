@@ -135,3 +135,19 @@ def test_loaded_tape_equals_built_tape_and_a_forged_one_is_refused(cache, monkey
     after = dc.statistics()["tape"]
     assert after["refused"] == before["refused"] + 1 and after["hit"] == before["hit"]
     assert _tape_arrays_equal(again, built)
+
+
+def test_loaded_equations_are_the_derived_ones(cache, monkeypatch):
+    """Equations loaded from a derived entry (Add, Mul and Pow rebuilt from their stored arguments without
+    evaluation) print, compare and hash exactly as a fresh derivation with the cache off (the truth)."""
+    from lagrange.examples import n_link_pendulum
+
+    first = n_link_pendulum(3).derived  # miss: derived and stored
+    before = dc.statistics()["derived"]["hit"]
+    loaded = n_link_pendulum(3).derived  # a new System: read back from the entry
+    assert dc.statistics()["derived"]["hit"] == before + 1 and loaded is not first
+    monkeypatch.setenv(dc.ENV_VAR, "0")
+    fresh = n_link_pendulum(3).derived
+    for name in ("mass_matrix", "forcing", "kinetic", "potential"):
+        a, b = getattr(loaded, name), getattr(fresh, name)
+        assert sp.srepr(a) == sp.srepr(b) and a == b and hash(a) == hash(b), name
