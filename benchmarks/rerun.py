@@ -20,9 +20,10 @@ empty disk cache); *warm* — a second process on the same cache. Per repeat the
 (route A cold, A warm, route B cold, B warm, ...). CPU is the child's user + system time
 (``resource.getrusage(RUSAGE_CHILDREN)``, imports and interpreter start counted); the child also reports the
 CPU time it spent before its first line after the imports, so the table gives CPU with and without imports
-(lagrange: ``import lagrange``, whose submodules load lazily when first used, so what a run pulls in later is
-counted in the run; heyoka: ``import heyoka, numpy``). JIT and compile costs are always counted. Medians of
-``--repeats`` runs; the machine is shared, so read ratios.
+(lagrange: ``import lagrange, numpy, scipy.integrate, sympy`` and ``numba`` for the numba routes — lagrange
+loads them lazily, so they are imported explicitly to be counted as imports; lagrange's own submodules still
+load during the run and are counted in it; heyoka: ``import heyoka, numpy``). JIT and compile costs are
+always counted. Medians of ``--repeats`` runs; the machine is shared, so read ratios.
 
 Run ``python benchmarks/rerun.py`` (``--quick``: the double pendulum, taylor vs heyoka, one repeat, under a
 minute). Writes ``benchmarks/results/rerun.md``.
@@ -62,8 +63,11 @@ _LAGRANGE = _MODELS + """
 import json, sys, time
 c0 = time.process_time()
 import lagrange as lg
-c1 = time.process_time()
+import numpy, scipy.integrate, sympy  # what a run uses; lagrange itself loads them lazily
 name, method, backend = sys.argv[1], sys.argv[2], sys.argv[3]
+if backend == "numba":
+    import numba
+c1 = time.process_time()
 t_end, y0 = problem(name)
 if name == "top":
     psi, th, ph = lg.coordinates("psi theta phi")
@@ -206,8 +210,9 @@ def write(results: dict, quick: bool, repeats: int) -> str:
         "heyoka: empty on-disk JIT cache). *warm*: a second process on the same cache (lagrange: derived "
         "equations, generated source, Taylor tape and numba bundles loaded; heyoka: its on-disk LLVM cache). "
         "CPU = user + system of the child (getrusage RUSAGE_CHILDREN); *with imports* counts the interpreter "
-        "start and the imports, *without* subtracts the CPU spent up to the end of `import lagrange` "
-        "(resp. `import heyoka, numpy`). JIT/compile costs are counted. Ratios are lagrange warm / heyoka's "
+        "start and the imports, *without* subtracts the CPU spent up to the end of `import lagrange, numpy, "
+        "scipy.integrate, sympy` (+ `numba` on numba routes; resp. `import heyoka, numpy`). "
+        "JIT/compile costs are counted. Ratios are lagrange warm / heyoka's "
         "fastest warm route on the same problem (< 1: lagrange's re-run is faster).", "",
         "| problem | route | cold CPU | warm CPU | warm CPU w/o imports | warm wall | warm / heyoka warm "
         "(with imports) | warm / heyoka warm (w/o imports) | final state vs heyoka |",
@@ -237,6 +242,7 @@ def main(argv=None) -> int:
     ap.add_argument("--quick", action="store_true", help="double pendulum, taylor vs heyoka, one repeat")
     ap.add_argument("--repeats", type=int, default=3)
     ap.add_argument("--problems", nargs="*", default=None)
+    ap.add_argument("--out", default="rerun.md", help="file name under benchmarks/results/")
     args = ap.parse_args(argv)
     repeats = 1 if args.quick else args.repeats
     problems = args.problems or (("double_pendulum",) if args.quick else PROBLEMS)
@@ -252,7 +258,7 @@ def main(argv=None) -> int:
         for name in problems:
             results[name] = measure(name, args.quick, repeats, primed)
     RESULTS.mkdir(exist_ok=True)
-    out = RESULTS / "rerun.md"
+    out = RESULTS / args.out
     out.write_text(write(results, args.quick, repeats))
     print(out.read_text())
     return 0
