@@ -288,10 +288,39 @@ def build_tape(eqs: Equations) -> Tape:
 
 
 _TAPES: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
+_SCALARS = ("n", "nz", "n_slots", "slot_t", "power")
+_ARRAYS = {"const_code": np.int64, "const_vals": np.float64, "code": np.int64, "consts": np.float64,
+           "mass": np.int64, "force": np.int64}
+
+
+def _tape_arrays(tape: Tape) -> dict[str, np.ndarray]:
+    return {name: np.asarray(getattr(tape, name), dtype=np.int64) for name in _SCALARS} | \
+        {name: getattr(tape, name) for name in _ARRAYS}
+
+
+def _tape_valid(a: dict[str, np.ndarray]) -> bool:
+    """Whether stored arrays make a well-formed tape (names, types, shapes; every slot inside the tape)."""
+    if set(a) != set(_SCALARS) | set(_ARRAYS) or any(a[k].shape != () or a[k].dtype != np.int64 for k in _SCALARS):
+        return False
+    if any(a[k].dtype != dtype for k, dtype in _ARRAYS.items()):
+        return False
+    n, n_slots = int(a["n"]), int(a["n_slots"])
+    code_ok = all(a[c].ndim == 2 and a[c].shape[1] == 4 and a[v].shape == (a[c].shape[0],)
+                  for c, v in (("const_code", "const_vals"), ("code", "consts")))
+    slots = np.concatenate([a["const_code"][:, 1:].ravel(), a["code"][:, 1:].ravel(), a["force"],
+                            a["mass"].ravel(), [a["power"]]]) if code_ok else np.zeros(0)
+    return (code_ok and n > 0 and a["mass"].shape == (n, n) and a["force"].shape == (n,)
+            and bool(np.all((slots >= -1) & (slots < n_slots))) and 0 <= int(a["slot_t"]) < n_slots)
 
 
 def tape_of(eqs: Equations) -> Tape:
-    """:func:`build_tape` of ``eqs``, built once per Equations (equal equations share it)."""
+    """:func:`build_tape` of ``eqs``, built once per Equations (equal equations share it) and kept in the
+    on-disk cache (:func:`lagrange.codegen.derivation_cache.cached_arrays`, entry ``tape_<key>.npz``): a
+    re-run of the same model in a new process loads it instead of running the CSE again."""
     if eqs not in _TAPES:
-        _TAPES[eqs] = build_tape(eqs)
+        from .derivation_cache import cached_arrays
+
+        a = cached_arrays(eqs, "tape", "", lambda: _tape_arrays(build_tape(eqs)), _tape_valid)
+        _TAPES[eqs] = Tape(**{k: int(a[k]) for k in _SCALARS},
+                           **{k: np.ascontiguousarray(a[k]) for k in _ARRAYS})
     return _TAPES[eqs]

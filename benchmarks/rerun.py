@@ -1,0 +1,268 @@
+"""Re-runs of the same model in a new process: lagrange (on-disk derivation, source and tape cache, numba
+bundles) against heyoka.py (its on-disk JIT cache), cold and warm, side by side (issue #23 item 4).
+
+Every run is a fresh interpreter that declares the model, integrates it over the problem's horizon with 1001
+output times at rtol = atol = 1e-10 and prints its final state. Routes:
+
+* ``lagrange taylor``: ``simulate(method="taylor")`` (python backend: the tape interpreted in C);
+* ``lagrange DOP853``: ``simulate()`` (the default method and backend: scipy's DOP853 on generated Python);
+* ``lagrange taylor numba`` / ``lagrange DOP853 numba``: ``backend="numba"`` (the compiled Taylor series / the
+  compiled RK loop), double pendulum and top only (the 10-link model's numba JIT takes minutes when cold);
+* ``heyoka default`` / ``heyoka compact``: heyoka used directly, as its documentation shows: the Lagrangian
+  written with heyoka expressions, ``heyoka.lagrangian``, ``taylor_adaptive(tol=1e-10)`` in the default or
+  ``compact_mode``, ``propagate_grid``. heyoka.py >= 7.10 keeps compiled LLVM modules in an on-disk cache
+  (on by default); each route gets its own cache directory (``llvm_state.set_diskcache_path``). The 10-link
+  pendulum runs compact mode only (its default-mode compile takes minutes cold).
+
+Scenarios: *cold* — an empty model cache (lagrange: a copy of a cache that holds only the once-per-machine
+pieces, the generic numba loops and the C interpreter, built by a priming run on another model; heyoka: an
+empty disk cache); *warm* — a second process on the same cache. Per repeat the order is interleaved
+(route A cold, A warm, route B cold, B warm, ...). CPU is the child's user + system time
+(``resource.getrusage(RUSAGE_CHILDREN)``, imports and interpreter start counted); the child also reports the
+CPU time it spent before its first line after the imports, so the table gives CPU with and without imports
+(lagrange: ``import lagrange, numpy, scipy.integrate, sympy`` and ``numba`` for the numba routes — lagrange
+loads them lazily, so they are imported explicitly to be counted as imports; lagrange's own submodules still
+load during the run and are counted in it; heyoka: ``import heyoka, numpy``). JIT and compile costs are
+always counted. Medians of ``--repeats`` runs; the machine is shared, so read ratios.
+
+Run ``python benchmarks/rerun.py`` (``--quick``: the double pendulum, taylor vs heyoka, one repeat, under a
+minute). Writes ``benchmarks/results/rerun.md``.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import platform
+import resource
+import shutil
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+import numpy as np
+
+RESULTS = Path(__file__).parent / "results"
+PROBLEMS = ("double_pendulum", "nlink10", "top")
+TOL = 1e-10
+
+_MODELS = """
+import math
+def problem(name):
+    if name == "top":
+        return 5.0, [0.0, 0.6, 0.0, 1.0, 0.0, 60.0]
+    n = 2 if name == "double_pendulum" else int(name[5:])
+    return 10.0, [0.6 * (-1) ** i / (i + 1) for i in range(n)] + [0.0] * n
+"""
+
+_LAGRANGE = _MODELS + """
+import json, sys, time
+c0 = time.process_time()
+import lagrange as lg
+import numpy, scipy.integrate, sympy  # what a run uses; lagrange itself loads them lazily
+name, method, backend = sys.argv[1], sys.argv[2], sys.argv[3]
+if backend == "numba":
+    import numba
+c1 = time.process_time()
+t_end, y0 = problem(name)
+if name == "top":
+    psi, th, ph = lg.coordinates("psi theta phi")
+    M, g, l, I1, I3 = lg.parameters("M g l I1 I3")
+    body = lg.RigidBody(M, (I1, I1, I3), orientation=lg.EulerAngles(psi, th, ph), com=(0, 0, l))
+    system = lg.System([psi, th, ph], bodies=[body], V=M * g * body.centre_of_mass[2], name="heavy symmetric top")
+    params = {"M": 1.0, "g": 9.81, "l": 0.2, "I1": 0.05, "I3": 0.02}
+else:
+    from lagrange.examples import n_link_pendulum
+    system = n_link_pendulum(len(y0) // 2)
+    params = {"g": 9.81}
+coords = system.coordinates
+initial = dict(zip(list(coords) + [q.diff(lg.t) for q in coords], y0))
+options = {} if method == "default" else {"method": method}
+tr = system.simulate(t_end, initial, params, backend=backend, rtol=1e-10, atol=1e-10, n_points=1001, **options)
+from lagrange.codegen.derivation_cache import statistics
+print(json.dumps({"import_cpu": c1 - c0, "final": tr.y[-1, : len(y0) // 2].tolist(), "label": tr.method,
+                  "cache": statistics()}))
+"""
+
+_HEYOKA = _MODELS + """
+import json, sys, time
+c0 = time.process_time()
+import heyoka as hy
+import numpy as np
+c1 = time.process_time()
+name, mode, cache = sys.argv[1], sys.argv[2], sys.argv[3]
+hy.llvm_state.set_diskcache_path(cache)
+t_end, y0 = problem(name)
+n = len(y0) // 2
+qs = list(hy.make_vars(*[f"q{i}" for i in range(n)]))
+qds = list(hy.make_vars(*[f"qd{i}" for i in range(n)]))
+if name == "top":
+    M, g, l, I1, I3 = 1.0, 9.81, 0.2, 0.05, 0.02
+    psi, th, ph = qs
+    dpsi, dth, dph = qds
+    L = (I1 / 2 * (dth**2 + dpsi**2 * hy.sin(th) ** 2) + I3 / 2 * (dph + dpsi * hy.cos(th)) ** 2
+         - M * g * l * hy.cos(th))
+else:  # unit masses and rods, absolute angles from the downward vertical
+    g = 9.81
+    L, vx, vy, y = 0.0, 0.0, 0.0, 0.0
+    for q, qd in zip(qs, qds):
+        vx, vy, y = vx + hy.cos(q) * qd, vy + hy.sin(q) * qd, y - hy.cos(q)
+        L = L + (vx**2 + vy**2) / 2 - g * y
+ta = hy.taylor_adaptive(hy.lagrangian(L, qs, qds), y0, tol=1e-10, compact_mode=(mode == "compact"))
+res = ta.propagate_grid(np.linspace(0.0, t_end, 1001))
+print(json.dumps({"import_cpu": c1 - c0, "final": np.asarray(res[-1])[-1, :n].tolist(), "label": f"heyoka {mode}",
+                  "cache_bytes": hy.llvm_state.get_diskcache_size()}))
+"""
+
+_PRIME = """
+import lagrange as lg
+x = lg.coordinates("x"); k = lg.parameters("k")
+s = lg.System([x], T=x.diff(lg.t) ** 2 / 2, V=k * x**2 / 2)
+import sys
+routes = ({"method": "taylor"}, {"method": "taylor", "backend": "numba"}, {"backend": "numba"})
+for options in routes[: int(sys.argv[1])]:
+    s.simulate(1.0, {"x": 0.1, "x_dot": 0.0}, {"k": 1.0}, **options)
+"""
+
+
+def routes(name: str, quick: bool) -> list[tuple[str, str, str]]:
+    """``(label, kind, argument)`` of each route run on ``name``."""
+    out = [("lagrange taylor", "lagrange", "taylor python")]
+    if not quick:
+        out.append(("lagrange DOP853 (default)", "lagrange", "default python"))
+        if name != "nlink10":
+            out += [("lagrange taylor numba", "lagrange", "taylor numba"),
+                    ("lagrange DOP853 numba loop", "lagrange", "DOP853 numba")]
+    if name != "nlink10":
+        out.append(("heyoka default", "heyoka", "default"))
+    if not quick:
+        out.append(("heyoka compact", "heyoka", "compact"))
+    return out
+
+
+def _child(kind: str, name: str, argument: str, cache: str) -> dict:
+    env = dict(os.environ, LAGRANGE_CACHE_DIR=cache)
+    env.pop("NUMBA_CACHE_DIR", None)
+    env.pop("LAGRANGE_DERIVATION_CACHE", None)
+    if kind == "lagrange":
+        argv = [sys.executable, "-c", _LAGRANGE, name, *argument.split()]
+    else:
+        argv = [sys.executable, "-c", _HEYOKA, name, argument, cache]
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    w0 = time.perf_counter()
+    r = subprocess.run(argv, env=env, capture_output=True, text=True)
+    wall = time.perf_counter() - w0
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    if r.returncode != 0:
+        raise RuntimeError(f"{kind} {name} {argument}: {r.stderr[-2000:]}")
+    out = json.loads(r.stdout.strip().splitlines()[-1])
+    cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+    return out | {"cpu": cpu, "wall": wall, "cpu_run": cpu - out["import_cpu"]}
+
+
+def measure(name: str, quick: bool, repeats: int, primed: str) -> dict:
+    """``{label: {"cold": [runs], "warm": [runs]}}``, routes interleaved within each repeat."""
+    runs: dict = {}
+    for _ in range(repeats):
+        for label, kind, argument in routes(name, quick):
+            with tempfile.TemporaryDirectory() as tmp:
+                cache = os.path.join(tmp, "cache")
+                if kind == "lagrange":
+                    shutil.copytree(primed, cache)
+                else:
+                    os.mkdir(cache, 0o700)
+                cold = _child(kind, name, argument, cache)
+                warm = _child(kind, name, argument, cache)
+            if kind == "lagrange" and warm["cache"]["tape" if "taylor" in argument else "derived"]["hit"] < 1:
+                raise AssertionError(f"{label} {name}: the warm run missed the cache: {warm['cache']}")
+            if warm["final"] != cold["final"]:
+                raise AssertionError(f"{label} {name}: the warm run differs from the cold run")
+            entry = runs.setdefault(label, {"cold": [], "warm": []})
+            entry["cold"].append(cold)
+            entry["warm"].append(warm)
+            print(f"{name:16s} {label:28s} cold {cold['cpu']:6.2f} s CPU  warm {warm['cpu']:6.2f} s CPU", flush=True)
+    return runs
+
+
+def _median(runs: list, field: str) -> float:
+    return statistics.median(r[field] for r in runs)
+
+
+def write(results: dict, quick: bool, repeats: int) -> str:
+    import heyoka
+    import numba
+    import sympy
+
+    import lagrange
+
+    lines = [
+        "# Re-runs in a new process: lagrange vs heyoka.py, cold and warm caches (issue #23 item 4)", "",
+        f"`python benchmarks/rerun.py{' --quick' if quick else ''}`: {platform.machine()}, {os.cpu_count()} CPUs "
+        f"shared with other jobs, Python {platform.python_version()}, lagrange {lagrange.__version__}, sympy "
+        f"{sympy.__version__}, numba {numba.__version__}, heyoka.py {heyoka.__version__}. Medians of {repeats} "
+        "run(s) per cell, routes interleaved; every run is a fresh interpreter. rtol = atol = 1e-10, 1001 output "
+        "times; final states agree between cold and warm runs bit for bit (checked).", "",
+        "*cold*: empty model cache (once-per-machine pieces primed: numba's generic loops, the C interpreter; "
+        "heyoka: empty on-disk JIT cache). *warm*: a second process on the same cache (lagrange: derived "
+        "equations, generated source, Taylor tape and numba bundles loaded; heyoka: its on-disk LLVM cache). "
+        "CPU = user + system of the child (getrusage RUSAGE_CHILDREN); *with imports* counts the interpreter "
+        "start and the imports, *without* subtracts the CPU spent up to the end of `import lagrange, numpy, "
+        "scipy.integrate, sympy` (+ `numba` on numba routes; resp. `import heyoka, numpy`). "
+        "JIT/compile costs are counted. Ratios are lagrange warm / heyoka's "
+        "fastest warm route on the same problem (< 1: lagrange's re-run is faster).", "",
+        "| problem | route | cold CPU | warm CPU | warm CPU w/o imports | warm wall | warm / heyoka warm "
+        "(with imports) | warm / heyoka warm (w/o imports) | final state vs heyoka |",
+        "|---|---|---|---|---|---|---|---|---|"]
+    for name, runs in results.items():
+        heyoka_labels = [label for label in runs if label.startswith("heyoka")]
+        best = min(heyoka_labels, key=lambda lb: _median(runs[lb]["warm"], "cpu"))
+        best_cpu = _median(runs[best]["warm"], "cpu")
+        best_run = _median(runs[best]["warm"], "cpu_run")
+        ref = np.array(runs[best]["warm"][0]["final"])
+        for label, entry in runs.items():
+            warm_cpu = _median(entry["warm"], "cpu")
+            warm_run = _median(entry["warm"], "cpu_run")
+            diff = float(np.max(np.abs(np.array(entry["warm"][0]["final"]) - ref)))
+            lines.append(
+                f"| {name} | {label} | {_median(entry['cold'], 'cpu'):.2f} | {warm_cpu:.2f} | {warm_run:.2f} | "
+                f"{_median(entry['warm'], 'wall'):.2f} | {warm_cpu / best_cpu:.2f} | {warm_run / best_run:.2f} | "
+                f"{diff:.1e} |")
+    lines += ["", "heyoka's fastest warm route per problem is the reference of the ratio columns. The 10-link "
+              "pendulum is chaotic (errors grow ~1e5-fold over t = 10), so its final states differ between "
+              "integrators at this tolerance; the double pendulum and the top agree."]
+    return "\n".join(lines) + "\n"
+
+
+def main(argv=None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--quick", action="store_true", help="double pendulum, taylor vs heyoka, one repeat")
+    ap.add_argument("--repeats", type=int, default=3)
+    ap.add_argument("--problems", nargs="*", default=None)
+    ap.add_argument("--out", default="rerun.md", help="file name under benchmarks/results/")
+    args = ap.parse_args(argv)
+    repeats = 1 if args.quick else args.repeats
+    problems = args.problems or (("double_pendulum",) if args.quick else PROBLEMS)
+    results = {}
+    with tempfile.TemporaryDirectory() as tmp:
+        primed = os.path.join(tmp, "primed")
+        env = dict(os.environ, LAGRANGE_CACHE_DIR=primed)
+        env.pop("NUMBA_CACHE_DIR", None)
+        subprocess.run([sys.executable, "-c", _PRIME, "1" if args.quick else "3"], env=env, check=True)
+        for entry in Path(primed).iterdir():  # keep only the once-per-machine pieces
+            if entry.name.startswith(("derived_", "source_", "tape_")):
+                entry.unlink()
+        for name in problems:
+            results[name] = measure(name, args.quick, repeats, primed)
+    RESULTS.mkdir(exist_ok=True)
+    out = RESULTS / args.out
+    out.write_text(write(results, args.quick, repeats))
+    print(out.read_text())
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())

@@ -1,0 +1,153 @@
+"""Re-runs in a new process (issue #23 item 4): a second process that simulates the same declared model with
+``method="taylor"`` loads the derived equations, the generated source and the Taylor tape from the on-disk
+cache (:func:`lagrange.codegen.derivation_cache.statistics` counts hits and misses); a changed model misses;
+a tampered tape entry is refused and rebuilt, and the rebuilt run gives the same answer as the cold one.
+"""
+
+from __future__ import annotations
+
+import io
+import json
+import os
+import subprocess
+import sys
+import textwrap
+import warnings
+
+import numpy as np
+import pytest
+import sympy as sp
+
+import lagrange as lg
+from lagrange.codegen import derivation_cache as dc
+from lagrange.codegen import tape as tape_module
+from lagrange.errors import CacheIntegrityWarning
+
+_CHILD = textwrap.dedent("""
+    import json, sys, warnings
+    import lagrange as lg
+    from lagrange.codegen import derivation_cache as dc
+    x = lg.coordinates("x")
+    m, k = lg.parameters("m k")
+    V = k * x**2 / 2 + float(sys.argv[1]) * x**4
+    s = lg.System([x], T=m * x.diff(lg.t)**2 / 2, V=V, name="oscillator")
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        tr = s.simulate(2.0, {"x": 0.5, "x_dot": 0.0}, {"m": 1.0, "k": 4.0}, method="taylor", rtol=1e-12,
+                        atol=1e-12, n_points=5)
+    print(json.dumps({"stats": dc.statistics(), "final": tr.y[-1].tolist(), "method": tr.method,
+                      "warnings": [type(w.message).__name__ for w in caught]}))
+""")
+
+
+def _run(cache, quartic: float = 0.0) -> dict:
+    env = dict(os.environ, LAGRANGE_CACHE_DIR=str(cache))
+    env.pop(dc.ENV_VAR, None)  # the default: on
+    r = subprocess.run([sys.executable, "-c", _CHILD, repr(quartic)], env=env, capture_output=True, text=True,
+                       timeout=240)
+    assert r.returncode == 0, r.stderr[-3000:]
+    return json.loads(r.stdout.strip().splitlines()[-1])
+
+
+def test_fresh_process_rerun_hits_changed_model_misses_tampered_tape_refused(tmp_path):
+    """Four fresh processes on one cache directory: cold (misses, entries written), warm (every entry a hit,
+    nothing rebuilt), a changed potential (misses again) and, after one byte of the tape entry is flipped,
+    the same model again (the tape is refused, rebuilt and the answer unchanged)."""
+    cold = _run(tmp_path)
+    assert cold["method"].startswith("taylor")
+    for kind in ("derived", "source", "tape"):
+        assert cold["stats"][kind]["hit"] == 0 and cold["stats"][kind]["miss"] >= 1, (kind, cold["stats"])
+    tapes = sorted(tmp_path.glob("tape_*.npz"))
+    assert len(tapes) == 1
+    # closed form of the harmonic oscillator: x = 0.5 cos(2 t)
+    assert np.allclose(cold["final"], [0.5 * np.cos(4.0), -1.0 * np.sin(4.0), 0.0][: len(cold["final"])],
+                       atol=1e-9)
+
+    warm = _run(tmp_path)
+    assert warm["final"] == cold["final"]  # bit for bit
+    for kind in ("derived", "tape"):
+        assert warm["stats"][kind] == {"hit": 1, "miss": 0, "refused": 0}, (kind, warm["stats"])
+    assert warm["stats"]["source"]["miss"] == 0
+
+    changed = _run(tmp_path, quartic=0.25)
+    assert changed["stats"]["derived"]["miss"] == 1 and changed["stats"]["tape"] == {"hit": 0, "miss": 1,
+                                                                                       "refused": 0}
+    assert len(list(tmp_path.glob("tape_*.npz"))) == 2
+    assert not np.allclose(changed["final"], cold["final"])
+
+    data = bytearray(tapes[0].read_bytes())
+    data[-40] ^= 0x01  # inside the payload: the seal no longer matches
+    tapes[0].write_bytes(bytes(data))
+    tampered = _run(tmp_path)
+    assert tampered["stats"]["tape"] == {"hit": 0, "miss": 1, "refused": 1}, tampered["stats"]
+    assert "CacheIntegrityWarning" in tampered["warnings"]
+    assert tampered["final"] == cold["final"]
+
+
+@pytest.fixture
+def cache(tmp_path, monkeypatch):
+    monkeypatch.setenv("LAGRANGE_CACHE_DIR", str(tmp_path))
+    monkeypatch.setenv(dc.ENV_VAR, "1")
+    return tmp_path
+
+
+def _pendulum() -> lg.System:
+    q = lg.coordinates("q")
+    g = lg.parameters("g")
+    return lg.System([q], T=q.diff(lg.t) ** 2 / 2, V=-g * sp.cos(q))
+
+
+def _tape_arrays_equal(a, b) -> bool:
+    return all(np.array_equal(getattr(a, f), getattr(b, f)) for f in ("const_code", "const_vals", "code", "consts",
+                                                                       "mass", "force")) \
+        and (a.n, a.nz, a.n_slots, a.slot_t, a.power) == (b.n, b.nz, b.n_slots, b.slot_t, b.power)
+
+
+def test_loaded_tape_equals_built_tape_and_a_forged_one_is_refused(cache, monkeypatch):
+    """In process: the tape read back from disk equals the tape built from the equations (a second build of
+    the same equations, cache off, is the independent truth); an entry re-sealed with the right key but
+    holding an out-of-range slot fails the shape/slot check and is rebuilt (never handed to the C
+    interpreter)."""
+    eqs = _pendulum().derived
+    built = tape_module.tape_of(eqs)
+    tape_module._TAPES.clear()
+    before = dc.statistics()["tape"]
+    loaded = tape_module.tape_of(_pendulum().derived)
+    assert dc.statistics()["tape"]["hit"] == before["hit"] + 1
+    monkeypatch.setenv(dc.ENV_VAR, "0")
+    assert _tape_arrays_equal(loaded, tape_module.build_tape(eqs)) and _tape_arrays_equal(loaded, built)
+
+    arrays = tape_module._tape_arrays(built)
+    bad = dict(arrays, code=arrays["code"].copy())
+    bad["code"][0, 3] = int(arrays["n_slots"]) + 5  # writes outside the tape's slots
+    assert tape_module._tape_valid(arrays) and not tape_module._tape_valid(bad)
+    monkeypatch.setenv(dc.ENV_VAR, "1")
+    entry = next(cache.glob("tape_*.npz"))
+    key = entry.stem.split("_", 1)[1]
+    buffer = io.BytesIO()
+    np.savez(buffer, **bad)
+    dc._write(entry, key, buffer.getvalue())  # sealed with the right key: only the content check can catch it
+    tape_module._TAPES.clear()
+    before = dc.statistics()["tape"]
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", CacheIntegrityWarning)
+        again = tape_module.tape_of(_pendulum().derived)
+    after = dc.statistics()["tape"]
+    assert after["refused"] == before["refused"] + 1 and after["hit"] == before["hit"]
+    assert _tape_arrays_equal(again, built)
+
+
+def test_loaded_equations_are_the_derived_ones(cache, monkeypatch):
+    """Equations loaded from a derived entry (Add, Mul and Pow rebuilt from their stored arguments without
+    evaluation) print, compare and hash exactly as a fresh derivation with the cache off (the truth)."""
+    from lagrange.examples import n_link_pendulum
+
+    first = n_link_pendulum(3).derived  # miss: derived and stored
+    before = dc.statistics()["derived"]["hit"]
+    loaded = n_link_pendulum(3).derived  # a new System: read back from the entry
+    assert dc.statistics()["derived"]["hit"] == before + 1 and loaded is not first
+    monkeypatch.setenv(dc.ENV_VAR, "0")
+    fresh = n_link_pendulum(3).derived
+    for name in ("mass_matrix", "forcing", "kinetic", "potential"):
+        a, b = getattr(loaded, name), getattr(fresh, name)
+        assert sp.srepr(a) == sp.srepr(b) and a == b and hash(a) == hash(b), name
