@@ -102,3 +102,46 @@ class Restorer:
 
 
 _FUNCTION_NAMES = {f.__name__: f for f in FUNCTIONS}
+
+
+#: expressions smaller than this (nodes, all of them together) are differentiated by sympy in :func:`jacobian`:
+#: there symengine's import and the round trip cost more than they save (the same threshold as
+#: ``lagrange.derive.lagrange.SYMENGINE_MIN_NODES``, decided by size alone so a result never depends on what a
+#: process imported before)
+JACOBIAN_MIN_NODES = 75
+
+
+def _nodes_at_least(exprs: Iterable, bound: int) -> bool:
+    count = 0
+    for e in exprs:
+        for _ in sp.preorder_traversal(e):
+            count += 1
+            if count >= bound:
+                return True
+    return False
+
+
+def jacobian(exprs: list, variables: list) -> list[list] | None:
+    """``[[∂e/∂v for v in variables] for e in exprs]`` by symengine, converted back exactly (:class:`Restorer`),
+    or None when sympy should do it: symengine not installed, the expressions below
+    :data:`JACOBIAN_MIN_NODES` nodes or holding something :func:`carries` refuses, or symengine failed.
+
+    ``variables`` are plain symbols. The derivatives equal sympy's (exact differentiation; only the order of
+    terms in the printed form may differ)."""
+    if not exprs or not _nodes_at_least(exprs, JACOBIAN_MIN_NODES):
+        return None
+    se = symengine()
+    if se is None or not carries(exprs, variables):
+        return None
+    free = set(variables).union(*(_free(e) for e in exprs))
+    restore = Restorer(free)
+    try:
+        ses = [se.sympify(e) for e in exprs]
+        svs = [se.Symbol(v.name) for v in variables]
+        return [[restore(e.diff(v)) if e.has(v) else sp.S.Zero for v in svs] for e in ses]
+    except FAILURES:
+        return None
+
+
+def _free(e) -> set:
+    return sp.sympify(e).free_symbols
