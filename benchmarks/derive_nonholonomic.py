@@ -7,8 +7,9 @@ Kane, …) so both see the same machine load; CPU time (``time.process_time``) a
 over the repetitions.
 
 * **lagrange**: *declare* builds the :class:`lagrange.System` (bodies, constraints, validation, the Frobenius
-  test of each non-holonomic constraint); *derive* is ``lagrange_equations`` (derivation cache off); *compile*
-  is ``compile_equations`` (default Python backend: CSE, generated source, ``exec``) with the parameters bound.
+  test of each non-holonomic constraint); *derive* is ``system.derived`` (``lagrange_equations``, the on-disk
+  derivation cache off); *compile* is ``system.compile(params)`` (default Python backend: CSE, generated
+  source, ``exec``; the equations derived once, in *derive*).
 * **KanesMethod**: *declare* builds frames, points, bodies, loads and the ``KanesMethod`` object; *derive* is
   ``kanes_equations``; *compile* is ``lambdify(..., cse=True)`` of ``mass_matrix_full`` and ``forcing_full``
   (sympy's fastest documented route to a callable).
@@ -54,18 +55,14 @@ def mark():
 
 _LAGRANGE_BICYCLE = r"""
 from lagrange_problems import bench_bicycle as bb
-from lagrange.derive.lagrange import lagrange_equations
-from lagrange.codegen.numeric import compile_equations
 mark(); system = bb.whipple_bicycle()
-mark(); eqs = lagrange_equations(system)
-mark(); model = compile_equations(eqs, system.bindable(bb.PARAMS))
+mark(); eqs = system.derived
+mark(); model = system.compile(bb.PARAMS)
 mark()
 """
 
 _LAGRANGE_DISC = r"""
 from lagrange import Nonholonomic, RigidBody, RotationSequence, System, coordinates, parameters, t
-from lagrange.derive.lagrange import lagrange_equations
-from lagrange.codegen.numeric import compile_equations
 mark()
 x, y, q1, q2, q3 = coordinates("x y q1 q2 q3")
 m, g, r = parameters("m g r")
@@ -77,8 +74,8 @@ omega = orientation.space_angular_velocity()
 v_contact = centre.diff(t) + omega.cross(-r * lean * sp.Matrix([0, 0, 1]))
 system = System([x, y, q1, q2, q3], bodies=[disc], V=m * g * centre[2],
                 constraints=[Nonholonomic(v_contact[0], "roll x"), Nonholonomic(v_contact[1], "roll y")])
-mark(); eqs = lagrange_equations(system)
-mark(); model = compile_equations(eqs, {m: 2.0, g: 9.81, r: 0.4})
+mark(); eqs = system.derived
+mark(); model = system.compile({m: 2.0, g: 9.81, r: 0.4})
 mark()
 """
 
@@ -173,7 +170,8 @@ def main() -> None:
              f"Median of {reps} fresh processes per cell; imports and sympy's deferred imports not timed. "
              "See the docstring of `benchmarks/derive_nonholonomic.py` for what each phase covers and the two "
              "bicycle formulations.", "",
-             "| model | tool | declare CPU | derive CPU | compile CPU | total CPU | total wall | Kane / lagrange (CPU) |",
+             "| model | tool | declare CPU | derive CPU | compile CPU | total CPU | total wall "
+             "| Kane / lagrange (CPU) |",
              "|---|---|---|---|---|---|---|---|"]
     for mdl in models:
         for tool in ("lagrange", "kane"):
@@ -182,7 +180,7 @@ def main() -> None:
             ratio = med("kane", mdl, "cpu") / med("lagrange", mdl, "cpu")
             label = "sympy KanesMethod" if tool == "kane" else "lagrange"
             lines.append(f"| {mdl} | {label} | {ph[0]:.2f} s | {ph[1]:.2f} s | {ph[2]:.2f} s | {tot:.2f} s "
-                         f"| {wall:.2f} s | {'×%.2f' % ratio if tool == 'lagrange' else ''} |")
+                         f"| {wall:.2f} s | {f'×{ratio:.2f}' if tool == 'lagrange' else ''} |")
     text = "\n".join(lines) + "\n"
     print(text)
     if not args.quick:
