@@ -300,7 +300,8 @@ def _tidy_force(F):
     rotating with t), accepted unless it grows the expression. Skipped when expanding would give more than
     :data:`_EXPAND_LIMIT` terms (:func:`_expanded_terms`): the result would be rejected as longer anyway, and
     expanding a bicycle's mass matrix that way took half of its derivation."""
-    if F == 0 or sp.count_ops(F) > _KINETIC_LIMIT or _expanded_terms(F) > _EXPAND_LIMIT or not fits(F):
+    # the cheap bound first: count_ops of a bicycle's mass-matrix entries costs more than the bound
+    if F == 0 or _expanded_terms(F) > _EXPAND_LIMIT or sp.count_ops(F) > _KINETIC_LIMIT or not fits(F):
         return F
     e = _pythagoras(F)
     return e if sp.count_ops(e) <= sp.count_ops(F) else F

@@ -19,6 +19,7 @@ import sympy as sp
 from ..budget import EXPAND_NODES, check
 from ..conventions import t
 from ..model.coordinates import to_symbols
+from ..symengine_bridge import jacobian
 
 __all__ = ["constraint_blocks", "multiplier_symbols", "PLANAR_STOP_SPEED"]
 
@@ -37,16 +38,21 @@ def constraint_blocks(specs, coords, q, qd) -> dict:
     n, m = len(q), len(specs)
     A = sp.zeros(m, n)
     b, c, phi = [], [], []
+    gs = [to_symbols(spec.velocity, coords) for spec in specs]
+    # ∂g/∂q̇ (the rows of A), ∂g/∂q and ∂g/∂t: by symengine for large constraints (a bicycle's rolling wheels)
+    variables = [*qd, *q, t]
+    fast = jacobian(gs, variables)
     for k, spec in enumerate(specs):
-        g = to_symbols(spec.velocity, coords)
+        g = gs[k]
+        d = fast[k] if fast is not None else [sp.diff(g, v) for v in variables]
         for j in range(n):
-            A[k, j] = sp.diff(g, qd[j])
+            A[k, j] = d[j]
         bk = g - sp.Add(*(A[k, j] * qd[j] for j in range(n)))
         check(bk, stage="constraint blocks (expansion)", what=f"constraint {spec.name}", max_expanded=EXPAND_NODES)
         bk = sp.expand(bk)
         b.append(bk)
         # d/dt g = A q̈ + (∂g/∂q) q̇ + ∂g/∂t ; with g linear in q̇, ∂g/∂q contains q̇ (that is Ȧ q̇ + ḃ)
-        rate = sum((sp.diff(g, q[j]) * qd[j] for j in range(n)), sp.S.Zero) + sp.diff(g, t)
+        rate = sum((d[n + j] * qd[j] for j in range(n)), sp.S.Zero) + d[2 * n]
         c.append(-rate)
         phi.append(None if spec.position is None else to_symbols(spec.position, coords))
     lam = multiplier_symbols(m)

@@ -75,10 +75,37 @@ class Frame:
         return self.to_inertial()[1] * as_vector(local, "local vector")
 
     def angular_velocity(self) -> sp.Matrix:
-        """The frame's angular velocity along the inertial axes, from ``Ṙ Rᵀ = [ω]×``."""
-        _, R = self.to_inertial()
-        W = time_derivative(R) * R.T
-        return sp.Matrix([W[2, 1], W[0, 2], W[1, 0]]).applyfunc(lambda e: trigsimp(sp.expand(e)))
+        """The frame's angular velocity along the inertial axes, composed level by level:
+        ``ω = ω_parent + R_parent ω_rel``. ``ω_rel`` of an elementary rotation (:func:`rot_x`, :func:`rot_y`,
+        :func:`rot_z` of an angle θ) is ``θ̇`` along its axis, with no simplification; any other rotation
+        matrix gets ``Ṙ Rᵀ = [ω_rel]×`` simplified at its own level only (small), never the multiplied-out
+        chain."""
+        rate = _elementary_rate(self.rotation)
+        if rate is None:
+            R = self.rotation
+            W = time_derivative(R) * R.T
+            rate = sp.Matrix([W[2, 1], W[0, 2], W[1, 0]]).applyfunc(lambda e: trigsimp(sp.expand(e)))
+        if self.parent is None:
+            return rate
+        _, R_parent = self.parent.to_inertial()
+        return self.parent.angular_velocity() + R_parent * rate
+
+
+def _elementary_rate(R: sp.Matrix) -> sp.Matrix | None:
+    """``θ̇ e_axis`` when ``R`` is exactly ``rot_x(θ)``, ``rot_y(θ)`` or ``rot_z(θ)`` (entry by entry), else None."""
+    from .rotations import _AXIS, _ELEMENTARY
+
+    for axis, k in (("x", 0), ("y", 1), ("z", 2)):
+        other = (k + 1) % 3  # the entry R[other, other] of an elementary rotation is cos θ
+        c = R[other, other]
+        if not isinstance(c, sp.cos):
+            continue
+        angle = c.args[0]
+        if R == _ELEMENTARY[axis](angle):
+            return sp.Matrix(_AXIS[axis]) * angle.diff(t)
+    if R == sp.eye(3):
+        return sp.zeros(3, 1)
+    return None
 
 
 @dataclass(frozen=True, slots=True)
