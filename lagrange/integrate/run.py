@@ -41,7 +41,8 @@ def choose_method(eqs, params=None, t_span=(0.0, 1.0), y0=None, rtol: float | No
     needs = _needs(eqs, [None] if events else [], [], _Varying() if varying_inputs else None)
     fun = None
     if params is not None and y0 is not None:
-        fun = _decision_function(eqs, params, None, {}, None)
+        built = _decision_model(eqs, params, None, {}, None)
+        fun = None if built is None else built.fun
     return auto.choose(eqs, fun, float(t_span[0]), y0, t_end=float(t_span[1]),
                        rtol=1e-9 if rtol is None else rtol, backend=backend or "python", needs=needs)
 
@@ -54,15 +55,15 @@ class _Varying:
         return "time-varying inputs"
 
 
-def _decision_function(eqs, params, model, constants, schedule):
-    """``fun(t, y)`` of the run's model for ``method="auto"`` (the given model, else the python build, which
-    :class:`NumericModel` keeps for the run), or None when it cannot be built (the run reports why)."""
+def _decision_model(eqs, params, model, constants, schedule) -> NumericModel | None:
+    """The model whose ``fun(t, y)`` ``method="auto"`` differentiates: the given model with the run's values,
+    else the python build (handed on to the run when the run would build the same), or None when it cannot be
+    built (the run then reports why)."""
     try:
-        built = model_for(eqs, params, model, "python" if model is None else model.backend, inputs=constants,
-                          schedule=schedule)
+        return model_for(eqs, params, model, "python" if model is None else model.backend, inputs=constants,
+                         schedule=schedule)
     except (LagrangeError, ArithmeticError):
         return None
-    return built.fun
 
 
 def simulate(
@@ -196,10 +197,13 @@ def simulate(
     needs = _needs(eqs, events, switches, schedule) | ({"dense_output": ""} if t_eval is not None else {})
     why = ""
     if entry is None:
-        name, why = auto.choose(eqs, _decision_function(eqs, params, model, constants, schedule), t0, y0,
-                                t_end=t1, rtol=rtol, backend=backend if model is None else model.backend,
-                                needs=needs, projection=bool(eqs.m) and st.method == "projection")
+        decided = _decision_model(eqs, params, model, constants, schedule)
+        name, why = auto.choose(eqs, None if decided is None else decided.fun, t0, y0, t_end=t1, rtol=rtol,
+                                backend=backend if model is None else model.backend, needs=needs,
+                                projection=bool(eqs.m) and st.method == "projection")
         entry = registry.get(name)
+        if model is None and backend == "python" and loop != "compiled" and decided is not None:
+            model = decided  # the python model the run would build again (the same equations and values)
     entry.check_equations(eqs)
     registry.check_supported(entry, needs,
                              conservative=all(Q == 0 for Q in eqs.nonconservative))
