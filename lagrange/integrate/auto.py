@@ -100,14 +100,9 @@ def estimate_stiffness(fun: Callable, t0: float, y0: np.ndarray) -> Stiffness | 
     (990, 98)
     """
     y0 = np.asarray(y0, dtype=float)
-    size = y0.size
-    start, calls = time.perf_counter(), 1
+    start = time.perf_counter()
     try:
-        f0 = _call(fun, t0, y0, size)
-        J = np.empty((size, size))
-        for j in range(size):
-            J[:, j], used = _column(fun, t0, y0, f0, j)
-            calls += used
+        J, calls = _jacobian(fun, float(t0), y0)
         seconds = (time.perf_counter() - start) / calls
         if not np.all(np.isfinite(J)):
             return None
@@ -122,27 +117,30 @@ def estimate_stiffness(fun: Callable, t0: float, y0: np.ndarray) -> Stiffness | 
     return Stiffness(decay, radius, decay / slow if decay and slow else 1.0, seconds)
 
 
-def _call(fun: Callable, t0: float, y: np.ndarray, size: int) -> np.ndarray:
-    return np.asarray(fun(t0, y), dtype=float)[:size]
+def _jacobian(fun: Callable, t0: float, y0: np.ndarray) -> tuple[np.ndarray, int]:
+    """The difference Jacobian at ``y0`` and the number of evaluations of ``fun`` it took.
 
+    Central differences with ``h``, checked against forward differences over ``2h``; in a column where they
+    disagree (a jump at ``y0``, e.g. ``sign(v)`` at v = 0, makes difference quotients scale as 1/h) the
+    differences are taken on each side of the jump (between ``y0 ± h`` and ``y0 ± 2h``), the smaller kept."""
+    size = y0.size
+    h = math.sqrt(np.finfo(float).eps) * np.maximum(1.0, np.abs(y0))
+    E = np.diag(h)
 
-def _column(fun: Callable, t0: float, y0: np.ndarray, f0: np.ndarray, j: int) -> tuple[np.ndarray, int]:
-    """Column ``j`` of the Jacobian and the number of evaluations it took.
+    def values(states) -> np.ndarray:  # row i: f at states[i]
+        return np.array([np.asarray(fun(t0, y), dtype=float)[:size] for y in states]).reshape(len(states), size)
 
-    Central difference with ``h``; when it disagrees with the forward difference over ``2h`` (a jump at
-    ``y0``, e.g. ``sign(v)`` at v = 0, makes difference quotients scale as 1/h) the differences are taken
-    on each side of the jump (between ``y0 ± h`` and ``y0 ± 2h``) and the smaller one is kept."""
-    h = math.sqrt(np.finfo(float).eps) * max(1.0, abs(y0[j]))
-    e = np.zeros(y0.size)
-    e[j] = h
-    fp, fm, f2 = (_call(fun, t0, y0 + k * e, y0.size) for k in (1.0, -1.0, 2.0))
-    central = (fp - fm) / (2 * h)
-    wide = (f2 - f0) / (2 * h)
-    scale = max(float(np.linalg.norm(central)), float(np.linalg.norm(wide)), 1.0)
-    if np.linalg.norm(central - wide) <= 1e-3 * scale:
-        return central, 3
-    f_2 = _call(fun, t0, y0 - 2 * e, y0.size)
-    return min((f2 - fp) / h, (fm - f_2) / h, key=np.linalg.norm), 4
+    f0 = values(y0[None, :])[0]
+    fp, fm, f2 = values(y0 + E), values(y0 - E), values(y0 + 2 * E)
+    central = ((fp - fm) / (2 * h[:, None])).T
+    wide = ((f2 - f0) / (2 * h[:, None])).T
+    scale = np.maximum(np.maximum(np.linalg.norm(central, axis=0), np.linalg.norm(wide, axis=0)), 1.0)
+    jumps = np.flatnonzero(np.linalg.norm(central - wide, axis=0) > 1e-3 * scale)
+    calls = 1 + 3 * size + len(jumps)
+    for j in jumps:
+        f_2 = values((y0 - 2 * E[j])[None, :])[0]
+        central[:, j] = min((f2[j] - fp[j]) / h[j], (fm[j] - f_2) / h[j], key=np.linalg.norm)
+    return central, calls
 
 
 def taylor_seconds(stiffness: Stiffness, horizon: float, tape_size: int, order: int, *,
@@ -238,13 +236,18 @@ def _taylor_info(eqs, allowed: tuple[str, ...], ctx: _Context) -> tuple[int, str
     if "taylor" not in allowed:
         return None
     from ..codegen.numeric import NumericModel
-    from .taylor import interpreter, taylor_order
-    from .taylor_run import taylor_ready
+    from .taylor import available_interpreter, taylor_order
 
-    if not taylor_ready(eqs):
+    engine = available_interpreter()
+    if engine is None:
         return None
-    engine = "series" if ctx.backend == "numba" else interpreter()
-    return taylor_order(ctx.rtol), engine, NumericModel.tape_for(eqs).size
+    try:
+        tape = NumericModel.tape_for(eqs)
+    except TypeError as exc:  # TapeError (a LagrangeError): not analytic (sign, Abs, ...) or constrained
+        if not isinstance(exc, LagrangeError):
+            raise
+        return None
+    return taylor_order(ctx.rtol), "series" if ctx.backend == "numba" else engine, tape.size
 
 
 def _stiff_choice(st: Stiffness, taylor, allowed: tuple[str, ...], ctx: _Context) -> tuple[str, str]:
