@@ -110,7 +110,8 @@ def test_implicit_methods_use_generated_jacobian():
 def test_auto_method_reports_choice():
     s, x = _oscillator(P=-parameters("b") * coordinates("x").diff(t) ** 2 / 2)
     sol = s.simulate(1, {x: 1.0, "x_dot": 0}, {"m": 1, "k": 1, "b": 1}, method="auto")
-    assert sol.method.startswith("LSODA (auto:")
+    # light damping is not stiff: a smooth problem (the Taylor tape, or DOP853 without a tape interpreter)
+    assert sol.method.split(" ")[0] in ("taylor", "DOP853") and "auto: " in sol.method and "not stiff" in sol.method
     with pytest.raises(TypeError, match="unknown method"):
         s.simulate(1, {x: 1.0, "x_dot": 0}, {"m": 1, "k": 1, "b": 1}, method="Euler")
 
@@ -160,7 +161,8 @@ def test_trajectory_lookup_csv_and_plot(tmp_path):
 
 def test_auto_detects_stiff_dissipation():
     """Double pendulum with strong joint damping (numerics.md hard case 2, c = 1e4): explicit methods
-    need ~300,000 evaluations; auto picks Radau and says why."""
+    need ~300,000 evaluations; auto picks an implicit method (the Taylor method's stability-limited steps
+    would cost more here) and says why."""
     from lagrange.examples import n_link_pendulum
 
     base = n_link_pendulum(2)
@@ -170,7 +172,7 @@ def test_auto_detects_stiff_dissipation():
                rayleigh=c * (q1.diff(t) ** 2 + (q2.diff(t) - q1.diff(t)) ** 2) / 2)
     ic = {q1: 0.3, q2: -0.2, q1.diff(t): 0, q2.diff(t): 0}
     sol = s.simulate(10, ic, {"g": 9.81, "c": 1e4}, method="auto", rtol=1e-6, atol=1e-8)
-    assert sol.method.startswith("Radau (auto: stiff")
+    assert sol.method.startswith("LSODA (auto: stiff") and "the Taylor method would take" in sol.method
     assert sol.nfev < 5_000
     soft = s.simulate(1, ic, {"g": 9.81, "c": 0.01}, method="auto")
     assert not soft.method.startswith("Radau")

@@ -227,8 +227,8 @@ def table() -> str:
     lines = ["  ".join(c.ljust(w) for c, w in zip(r, widths)).rstrip() for r in rows]
     lines.insert(1, "  ".join("-" * w for w in widths))
     lines.append("")
-    lines.append("auto: chosen from this table (stiff: Radau; dissipative: LSODA; tight rtol or analytic: taylor; "
-                 "else DOP853).")
+    lines.append("auto: chosen among the methods that support the request (stiff: taylor when cheaper, else LSODA, "
+                 "Radau with projection; smooth: taylor; else DOP853).")
     lines.append("Fixed-step (geometric) methods need step=h and a conservative, unconstrained system without "
                  "inputs.")
     lines += [f"  {m.name}: {m.summary}" for m in METHODS]

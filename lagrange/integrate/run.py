@@ -18,78 +18,52 @@ import numpy as np
 from ..codegen.numeric import NumericModel
 from ..errors import IntegrationError, LagrangeError, MethodError
 from ..results.trajectory import Trajectory
-from . import registry
+from . import auto, registry
 from .options import _DEPRECATED as _UNSET
 from .options import StepOptions, check_run_options, merge_deprecated
-from .prepare import GimbalLockWarning, check_model, initial_state, split_inputs
+from .prepare import GimbalLockWarning, check_model, initial_state, model_for, split_inputs
 from .request import RunRequest
-from .taylor_run import taylor_ready
 
 __all__ = ["simulate", "initial_state", "choose_method", "GimbalLockWarning"]
-
-
-def _stiffness(eqs, params, t_span, y0) -> tuple[float, float] | None:
-    """(fastest decay rate max(−Re λ), stiffness ratio) of the Jacobian at the initial state, or None."""
-    if eqs.m or params is None or y0 is None:
-        return None
-    try:
-        model = NumericModel.build(eqs, params)
-        lam = np.linalg.eigvals(model.jacobian(float(t_span[0]), y0))
-    except (LagrangeError, np.linalg.LinAlgError, ValueError, TypeError, ZeroDivisionError):
-        return None
-    decay = float(np.max(-lam.real, initial=0.0))
-    nonzero = np.abs(lam)[np.abs(lam) > 1e-9 * max(1.0, float(np.max(np.abs(lam))))]
-    slow = float(np.min(nonzero)) if nonzero.size else 1.0
-    return decay, decay / slow
 
 
 def choose_method(eqs, params=None, t_span=(0.0, 1.0), y0=None, rtol: float | None = None, *,
                   backend: str | None = None, events: bool = False, varying_inputs: bool = False
                   ) -> tuple[str, str]:
-    """A sensible method and the reason (``method="auto"``).
+    """A sensible method and the reason (``method="auto"``; :func:`lagrange.integrate.auto.choose`).
 
-    From the Jacobian's eigenvalues at the initial state: a fast decay (rate × horizon > 10³) much faster
-    than the slowest mode (ratio > 10³) is stiffness → Radau with the generated Jacobian (explicit methods
-    would need hundreds of thousands of steps). Otherwise dissipative systems (P or D) get LSODA, which
-    switches to BDF if stiffness appears later. The rest get DOP853, the most efficient Runge–Kutta method
-    at tight tolerances — or the Taylor method when the equations are analytic and unconstrained and there
-    are no ``events``: with ``backend`` ``"python"`` (or ``"reference"``) whenever the tape interpreter built
-    in C is here (it loads in a millisecond, and its steps run compiled while scipy's DOP853 loop runs in
-    Python: 4–70× faster at equal rtol in the benchmark, and more accurate), otherwise when ``rtol ≤ 1e-11`` (and a C
-    compiler or numba can run the tape), where its order grows with the accuracy at an unchanged step
-    (measured in ``benchmarks/results/workprecision.md``). With ``varying_inputs`` (callable or sampled input
-    values, evaluated in Python per step) never the Taylor method, whose tape holds only constants.
+    The Jacobian's eigenvalues are estimated by finite differences of the compiled right-hand side at ``y0``
+    (with ``params``; no estimate without them); stiff problems get the Taylor method when its
+    stability-limited cost is below an implicit method's, else LSODA; the rest the Taylor method (python
+    backend with the C tape interpreter, or rtol ≤ 1e-11) or DOP853. With ``events`` or ``varying_inputs``
+    only methods of the registry that support them.
     """
-    horizon = abs(float(t_span[1]) - float(t_span[0]))
-    st = _stiffness(eqs, params, t_span, y0)
-    if st is not None and st[0] * horizon > 1e3 and st[1] > 1e3:
-        return "Radau", (f"stiff: fastest decay rate {st[0]:.3g}/time over a horizon of {horizon:g} "
-                         f"(stiffness ratio {st[1]:.3g}); Radau with the generated Jacobian")
-    if eqs.power_function != 0 or eqs.rayleigh != 0:
-        return "LSODA", "dissipation present (P or rayleigh): possibly stiff later, LSODA switches to BDF if so"
-    python_model = backend in ("python", "reference")
-    taylor_wanted = python_model or (rtol is not None and rtol <= 1e-11)
-    taylor = registry.get("taylor")
-    fits = (taylor.events or not events) and (taylor.varying_inputs or not varying_inputs) and not eqs.m
-    if fits and taylor_wanted and taylor_ready(eqs):
-        from .taylor import interpreter, taylor_order
-
-        order = taylor_order(rtol if rtol is not None else 1e-9)
-        if python_model and interpreter() == "c":
-            return "taylor", (f"no dissipation, non-stiff, {backend} backend: the Taylor method (order {order}) "
-                              "steps in the compiled tape interpreter, scipy's DOP853 in Python")
-        if rtol is not None and rtol <= 1e-11:
-            return "taylor", (f"no dissipation, non-stiff, rtol={rtol:g}: the Taylor method (order "
-                              f"{order}) needs fewer operations than DOP853 here")
-    return "DOP853", "no dissipation: non-stiff, DOP853 is the most efficient explicit method"
+    needs = _needs(eqs, [None] if events else [], [], _Varying() if varying_inputs else None)
+    fun = None
+    if params is not None and y0 is not None:
+        built = _decision_model(eqs, params, None, {}, None)
+        fun = None if built is None else built.fun
+    return auto.choose(eqs, fun, float(t_span[0]), y0, t_end=float(t_span[1]),
+                       rtol=1e-9 if rtol is None else rtol, backend=backend or "python", needs=needs)
 
 
-def _auto(req_eqs, params, t_span, y0, rtol, backend, events, varying_inputs) -> tuple[str, str]:
-    """``method="auto"``: :func:`choose_method`, checked against the registry (the choice must support what
-    the run needs, which it does by construction: Radau, LSODA and DOP853 support everything)."""
-    method, why = choose_method(req_eqs, params, t_span, y0, rtol=rtol, backend=backend, events=events,
-                                varying_inputs=varying_inputs)
-    return registry.get(method).name, why
+class _Varying:
+    """Stands for a schedule of time-varying inputs in :func:`choose_method`."""
+
+    @staticmethod
+    def describe() -> str:
+        return "time-varying inputs"
+
+
+def _decision_model(eqs, params, model, constants, schedule) -> NumericModel | None:
+    """The model whose ``fun(t, y)`` ``method="auto"`` differentiates: the given model with the run's values,
+    else the python build (handed on to the run when the run would build the same), or None when it cannot be
+    built (the run then reports why)."""
+    try:
+        return model_for(eqs, params, model, "python" if model is None else model.backend, inputs=constants,
+                         schedule=schedule)
+    except (LagrangeError, ArithmeticError):
+        return None
 
 
 def simulate(
@@ -220,13 +194,17 @@ def simulate(
         eqs = NumericModel.planar_friction(eqs, fr.treatment, fr.epsilon)
     y0 = initial_state(eqs.coordinates, initial)
     params, constants, schedule = split_inputs(eqs, params, inputs, (t0, t1), y0)
+    needs = _needs(eqs, events, switches, schedule) | ({"dense_output": ""} if t_eval is not None else {})
     why = ""
     if entry is None:
-        name, why = _auto(eqs, params, (t0, t1), y0, rtol, backend if model is None else model.backend,
-                          bool(events), schedule is not None)
+        decided = _decision_model(eqs, params, model, constants, schedule)
+        name, why = auto.choose(eqs, None if decided is None else decided.fun, t0, y0, t_end=t1, rtol=rtol,
+                                backend=backend if model is None else model.backend, needs=needs,
+                                projection=bool(eqs.m) and st.method == "projection")
         entry = registry.get(name)
+        if model is None and backend == "python" and loop != "compiled" and decided is not None:
+            model = decided  # the python model the run would build again (the same equations and values)
     entry.check_equations(eqs)
-    needs = _needs(eqs, events, switches, schedule) | ({"dense_output": ""} if t_eval is not None else {})
     registry.check_supported(entry, needs,
                              conservative=all(Q == 0 for Q in eqs.nonconservative))
     if switches and eqs.m:

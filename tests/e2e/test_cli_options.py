@@ -181,6 +181,8 @@ def test_every_method_is_reachable_case_insensitively(tmp_path, method, capsys):
     assert abs(state(out)["x"] - math.cos(2.0)) < 1e-4
     if method.lower() != "auto":
         assert f"method {method.lower()}" in out.lower()
+    else:  # the choice and the reason are printed
+        assert "auto: " in out and "stiff" in out
 
 
 def test_python_spec_options_params_initial_and_overrides(tmp_path, capsys):
