@@ -91,3 +91,18 @@ def test_carriers_keep_assumptions_across_calls():
         assert sp.expand(back - sp.diff(m * r**2 * sp.sin(r) / 2, r)) == 0
     with pytest.raises(ValueError, match="share a name"):
         to_symengine([r_pos + r_real], {r_pos, r_real})
+
+
+def test_symengine_printing_keeps_domain_errors():
+    """``x**(-1/2)`` and ``sqrt(x)`` print as ``math.sqrt`` (a domain error for x < 0, as the sympy printer
+    gives), never as a power that Python would turn into a complex number."""
+    from lagrange.codegen.source import print_expr
+
+    y0, p0 = se.symbols("y0 p0")
+    for e in (y0 ** se.Rational(-1, 2) + p0, se.sqrt(y0) * p0, 1 / se.sqrt(y0 + p0)):
+        text = print_expr(e)
+        assert "math.sqrt(" in text, text
+        with pytest.raises(ValueError):
+            eval(text, {"math": __import__("math"), "y0": -2.0, "p0": 0.5})  # noqa: S307 - our own printed text
+    text = print_expr(se.pi * y0 + se.E + se.exp(y0) + se.Rational(1, 3))
+    assert sorted(text.split(" + ")) == ["1/3", "math.e", "math.exp(y0)", "math.pi*y0"]

@@ -50,7 +50,10 @@ def print_expr(expr) -> str:
     are float divisions in Python 3, as sympy prints them too)."""
     if isinstance(expr, sp.Basic):
         return _PRINTER.doprint(expr)
-    return _SYMENGINE_NAME.sub(lambda m: _SYMENGINE_NAMES[m.group(1)], str(expr))
+    text = str(expr)
+    if "**(-1/2)" in text:  # sympy prints 1/math.sqrt(x): a domain error, not a complex number, when x < 0
+        return _PRINTER.doprint(sp.sympify(expr))
+    return _SYMENGINE_NAME.sub(lambda m: _SYMENGINE_NAMES[m.group(1)], text)
 
 
 def _ldl_factor(n: int, entry, tag: str, what: str, fail: str | None = None) -> tuple[list[str], dict, list[str]]:
