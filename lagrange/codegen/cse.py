@@ -151,12 +151,13 @@ def _symengine_fuse(eqs: Equations, constraint_rhs) -> FusedExpressions | None:
     ren = rename_map(eqs)
     if not carries(exprs, ren):
         return None
-    free = set().union(*(e.free_symbols for e in exprs)) if exprs else set()
-    if not free <= set(ren):
-        return None
     try:
         names = {se.Symbol(old.name): se.Symbol(new.name) for old, new in ren.items()}
-        repl, red = se.cse([se.sympify(e).xreplace(names) for e in exprs])
+        renamed = [se.sympify(e).xreplace(names) for e in exprs]
+        allowed = set(names.values())
+        if any(not e.free_symbols <= allowed for e in renamed):  # a symbol generated code would not know
+            return None
+        repl, red = se.cse(renamed)
         temps = {sym: se.Symbol(f"c{k}") for k, (sym, _) in enumerate(repl)}
         repl = [(temps[sym], e.xreplace(temps)) for sym, e in repl]
         red = [e.xreplace(temps) for e in red]
