@@ -16,7 +16,7 @@ from types import ModuleType
 
 import sympy as sp
 
-__all__ = ["FUNCTIONS", "FAILURES", "symengine", "carries", "Restorer"]
+__all__ = ["FUNCTIONS", "FAILURES", "symengine", "carries", "Restorer", "to_symengine"]
 
 #: elementary functions symengine represents exactly and converts back to the same sympy class
 FUNCTIONS = (sp.sin, sp.cos, sp.tan, sp.exp, sp.log, sp.sinh, sp.cosh, sp.tanh, sp.asin, sp.acos, sp.atan)
@@ -44,7 +44,7 @@ def carries(exprs: Iterable, symbols: Iterable = ()) -> bool:
     for s in symbols:
         if type(s) is not sp.Symbol or seen.setdefault(s.name, s) != s:
             return False
-    visited: set = set()
+    visited: set = set()  # each distinct subtree once: linear in the size of the expression graph
     stack = list(exprs)
     while stack:
         node = stack.pop()
@@ -59,6 +59,44 @@ def carries(exprs: Iterable, symbols: Iterable = ()) -> bool:
         else:
             stack.extend(node.args)
     return True
+
+
+def to_symengine(exprs: Iterable, symbols: Iterable[sp.Symbol]) -> list:
+    """``exprs`` in symengine, each of ``symbols`` as a symbol that symengine converts back to that very
+    sympy symbol (with its assumptions): results then come back by ``sympy.sympify`` alone, without
+    :class:`Restorer`'s second pass over the tree. Precondition: :func:`carries` holds for ``exprs`` and
+    ``symbols``."""
+    se = symengine()
+    carrier = _carrier_class(se)
+    names = {se.Symbol(s.name): carrier(s) for s in symbols}
+    if len(names) != len(set(symbols)):
+        raise ValueError("to_symengine: two symbols share a name")
+    return [se.sympify(e).xreplace(names) for e in exprs]
+
+
+_CARRIER: list = []
+
+
+def _carrier_class(se: ModuleType) -> type:
+    """A symengine symbol holding its sympy original (a subclass of ``symengine.Symbol`` is stored as a
+    Python object by symengine, and ``_sympy_`` converts it back).
+
+    Its symengine name holds the original's assumptions: symengine compares symbols by name, and sympy's
+    cache, keyed by the symengine arguments of a conversion, would otherwise hand back a result built from an
+    earlier same-named symbol with other assumptions (found by tests/test_derive.py: a positive ``r`` of one
+    problem in the equations of the next)."""
+    if not _CARRIER:
+
+        class Carried(se.Symbol):
+            def __init__(self, original: sp.Symbol):
+                super().__init__(f"{original.name}{sorted(original.assumptions0.items())}")
+                self.original = original
+
+            def _sympy_(self) -> sp.Symbol:
+                return self.original
+
+        _CARRIER.append(Carried)
+    return _CARRIER[0]
 
 
 class Restorer:

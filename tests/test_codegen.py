@@ -132,6 +132,7 @@ def test_cse_variants_agree_with_reference(monkeypatch):
             m.setattr(cse_module, "FACTOR_TERMS_LIMIT", limit)
             if not with_symengine:
                 m.setattr(cse_module, "_symengine_cse", lambda exprs: None)
+                m.setattr(cse_module, "_symengine_fuse", lambda eqs, crhs: None)
             cse_module._FUSED.clear()  # fuse remembers its result per equations: run this variant's CSE
             fused, _ = cse_module.fuse(s.derived)
             assert all(c.is_real for c, _ in fused.temporaries)

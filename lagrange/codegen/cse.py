@@ -19,7 +19,8 @@ from ..conventions import t
 from ..derive.equations import Equations
 from ..symengine_bridge import FAILURES, Restorer, carries, symengine
 
-__all__ = ["FusedExpressions", "fuse", "rename_map", "numeric_arguments", "FACTOR_TERMS_LIMIT"]
+__all__ = ["FusedExpressions", "fuse", "rename_map", "numeric_arguments",
+           "FACTOR_TERMS_LIMIT"]
 
 #: expression-tree size (nodes of M, f and the constraint blocks, shared subtrees counted each time) above
 #: which CSE skips sympy's ``factor_terms`` pre-pass: symengine's CSE when installed, else sympy's with its
@@ -68,15 +69,28 @@ class FusedExpressions:
 _FUSED: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
 
 
-def fuse(eqs: Equations, *, extra: tuple = (), constraint_rhs=None) -> tuple[FusedExpressions, tuple]:
+def fuse(eqs: Equations, *, extra: tuple = (), constraint_rhs=None,
+         printable: bool = False) -> tuple[FusedExpressions, tuple]:
     """Run one CSE over M's upper triangle, f, the constraint blocks A and c (``constraint_rhs``
     overrides c, e.g. with Baumgarte terms) and ``extra`` expressions.
+
+    ``printable=True`` (code printing only, no ``extra``): the same CSE, but on the symengine path
+    (symengine installed, the expressions above :data:`FACTOR_TERMS_LIMIT` nodes and carried exactly) the
+    renaming, the CSE and the result stay in symengine, and the expressions of the result are symengine
+    objects that :func:`lagrange.codegen.source.print_expr` prints directly — no conversion back to sympy,
+    which took most of the code generation of a 10-link pendulum. Elsewhere, and for the Taylor tape and
+    heyoka (which need sympy), the result is sympy. The two give the same expressions up to the order of
+    terms in sums (tests/test_codegen_symengine.py).
 
     Floats are introduced here only: exact rationals stay exact until printed.
     Returns the fused expressions and the CSE'd ``extra`` expressions (treat both as read-only: the result
     is remembered per equations and arguments, so the code generator and the Taylor tape of one model share
     one CSE — 0.14 s of a 10-link pendulum's first result).
     """
+    if printable and not extra:
+        fast = _symengine_fuse(eqs, constraint_rhs)
+        if fast is not None:
+            return fast, ()
     key = (tuple(extra), None if constraint_rhs is None else tuple(constraint_rhs))
     memo = _FUSED.setdefault(eqs, {})
     if key not in memo:
@@ -84,9 +98,10 @@ def fuse(eqs: Equations, *, extra: tuple = (), constraint_rhs=None) -> tuple[Fus
     return memo[key]
 
 
-def _fuse(eqs: Equations, extra: tuple, constraint_rhs) -> tuple[FusedExpressions, tuple]:
+def _fuse_inputs(eqs: Equations, extra: tuple, constraint_rhs) -> tuple[list, tuple]:
+    """The expressions one CSE runs over, in the plain symbols of the derivation, and their index sets
+    ``(idx of M's upper triangle, idx of A, idx of B)``."""
     n = eqs.n
-    ren = rename_map(eqs)
     A = eqs.constraint_matrix
     crhs = list(constraint_rhs) if constraint_rhs is not None else list(eqs.constraint_rhs)
     M, f = sp.Matrix(eqs.mass_matrix), sp.Matrix(eqs.forcing)
@@ -97,16 +112,18 @@ def _fuse(eqs: Equations, extra: tuple, constraint_rhs) -> tuple[FusedExpression
         M = M + A.T * A
         f = f + A.T * sp.Matrix(crhs)
     idx = [(i, j) for i in range(n) for j in range(i, n) if M[i, j] != 0]
-    exprs = [M[i, j].xreplace(ren) for i, j in idx]
-    exprs += [e.xreplace(ren) for e in f]
+    exprs = [M[i, j] for i, j in idx] + list(f)
     aidx = [(r, j) for r in range(eqs.m) for j in range(n) if A[r, j] != 0]
-    exprs += [A[r, j].xreplace(ren) for r, j in aidx]
-    exprs += [sp.sympify(e).xreplace(ren) for e in crhs]
+    exprs += [A[r, j] for r, j in aidx] + [sp.sympify(e) for e in crhs]
     B = eqs.reaction_matrix
     bidx = [(j, r) for r in range(eqs.m) for j in range(n) if B[j, r] != 0] if eqs.is_rough else []
-    exprs += [B[j, r].xreplace(ren) for j, r in bidx]
-    exprs += [sp.sympify(e).xreplace(ren) for e in extra]
-    repl, red = _cse(exprs)
+    exprs += [B[j, r] for j, r in bidx] + [sp.sympify(e) for e in extra]
+    return exprs, (idx, aidx, bidx)
+
+
+def _assemble(eqs: Equations, indices: tuple, repl: list, red: list) -> tuple[FusedExpressions, tuple]:
+    n = eqs.n
+    idx, aidx, bidx = indices
     k = len(idx)
     ka = k + n + len(aidx)
     fused = FusedExpressions(
@@ -121,6 +138,53 @@ def _fuse(eqs: Equations, extra: tuple, constraint_rhs) -> tuple[FusedExpression
     return fused, tuple(red[ka + eqs.m + len(bidx) :])
 
 
+def _symengine_fuse(eqs: Equations, constraint_rhs) -> FusedExpressions | None:
+    """The symengine path of :func:`fuse` with ``printable=True``, or None where :func:`_cse` would not take
+    it."""
+    se = symengine()
+    if se is None:
+        return None
+    exprs, indices = _fuse_inputs(eqs, (), constraint_rhs)
+    check(sp.Tuple(*exprs), stage="common-subexpression elimination", what="the equations of motion")
+    if _tree_size(exprs) <= FACTOR_TERMS_LIMIT:
+        return None
+    ren = rename_map(eqs)
+    if not carries(exprs, ren):
+        return None
+    try:
+        names = {se.Symbol(old.name): se.Symbol(new.name) for old, new in ren.items()}
+        renamed = [se.sympify(e).xreplace(names) for e in exprs]
+        allowed = set(names.values())
+        if any(not e.free_symbols <= allowed for e in renamed):  # a symbol generated code would not know
+            return None
+        repl, red = se.cse(renamed)
+        temps = {sym: se.Symbol(f"c{k}") for k, (sym, _) in enumerate(repl)}
+        repl = [(temps[sym], e.xreplace(temps)) for sym, e in repl]
+        red = [e.xreplace(temps) for e in red]
+    except FAILURES:
+        return None
+    return _assemble(eqs, indices, repl, red)[0]
+
+
+def _tree_size(exprs: list) -> int:
+    """Tree size of ``exprs`` (shared subtrees counted each time), counted only up to
+    :data:`FACTOR_TERMS_LIMIT` + 1."""
+    size = 0
+    for e in exprs:
+        for _ in sp.preorder_traversal(e):
+            size += 1
+            if size > FACTOR_TERMS_LIMIT:
+                return size
+    return size
+
+
+def _fuse(eqs: Equations, extra: tuple, constraint_rhs) -> tuple[FusedExpressions, tuple]:
+    ren = rename_map(eqs)
+    exprs, indices = _fuse_inputs(eqs, extra, constraint_rhs)
+    repl, red = _cse([e.xreplace(ren) for e in exprs])
+    return _assemble(eqs, indices, repl, red)
+
+
 def _cse(exprs: list) -> tuple[list, list]:
     """``sympy.cse`` of ``exprs`` with temporaries ``c0, c1, …`` (real); more than
     :data:`lagrange.budget.MAX_NODES` distinct nodes raise :class:`~lagrange.errors.ExpressionTooLarge`.
@@ -129,13 +193,7 @@ def _cse(exprs: list) -> tuple[list, list]:
     symengine's CSE when installed and ``exprs`` are what it carries back exactly
     (:func:`lagrange.symengine_bridge.carries`), else to sympy's with its negation pre-pass only."""
     check(sp.Tuple(*exprs), stage="common-subexpression elimination", what="the equations of motion")
-    size = 0
-    for e in exprs:  # tree size (shared subtrees counted each time), counted only up to the limit
-        for _ in sp.preorder_traversal(e):
-            size += 1
-            if size > FACTOR_TERMS_LIMIT:
-                break
-    if size <= FACTOR_TERMS_LIMIT:
+    if _tree_size(exprs) <= FACTOR_TERMS_LIMIT:
         return sp.cse(exprs, symbols=sp.numbered_symbols("c", real=True), optimizations="basic")
     fast = _symengine_cse(exprs)
     if fast is not None:

@@ -808,7 +808,7 @@ def compile_equations(eqs: Equations, params: Mapping, *, backend: str = "python
 
 def _generate_source(eqs: Equations, backend: str, n_params: int, constraint_rhs) -> str:
     """The generated source of the ``python`` or ``numba`` backend: one CSE over M and f, then printing."""
-    fused, _ = fuse(eqs, constraint_rhs=constraint_rhs)
+    fused, _ = fuse(eqs, constraint_rhs=constraint_rhs, printable=True)
     if backend == "python":
         return rhs_source(fused, n_params=n_params, flavour="python")
     if eqs.m:

@@ -18,6 +18,9 @@ pivot that is not positive (relative to the diagonal entry, 1e-13) raises ``Zero
 
 from __future__ import annotations
 
+import re
+
+import sympy as sp
 from sympy.printing.pycode import PythonCodePrinter
 
 from .cse import FusedExpressions
@@ -33,8 +36,24 @@ class _Printer(PythonCodePrinter):
 _PRINTER = _Printer({"fully_qualified_modules": True, "standard": "python3"})
 
 
+#: names symengine prints for the functions and constants it carries
+#: (:data:`lagrange.symengine_bridge.FUNCTIONS`), and their Python spelling
+_SYMENGINE_NAMES = {**{f: f"math.{f}" for f in ("sin", "cos", "tan", "exp", "log", "sinh", "cosh", "tanh", "asin",
+                                                 "acos", "atan", "sqrt")}, "pi": "math.pi", "E": "math.e"}
+_SYMENGINE_NAME = re.compile(r"(?<![\w.])(" + "|".join(_SYMENGINE_NAMES) + r")(?![\w.])")
+
+
 def print_expr(expr) -> str:
-    return _PRINTER.doprint(expr)
+    """Python source of ``expr``: a sympy expression (sympy's Python code printer) or a symengine expression
+    from :func:`~lagrange.codegen.cse.fuse` (``printable=True``) (symengine's own printer, linear in the size of the
+    expression, with its function names and constants qualified by ``math.``; integer ratios such as ``1/3``
+    are float divisions in Python 3, as sympy prints them too)."""
+    if isinstance(expr, sp.Basic):
+        return _PRINTER.doprint(expr)
+    text = str(expr)
+    if "**(-1/2)" in text:  # sympy prints 1/math.sqrt(x): a domain error, not a complex number, when x < 0
+        return _PRINTER.doprint(sp.sympify(expr))
+    return _SYMENGINE_NAME.sub(lambda m: _SYMENGINE_NAMES[m.group(1)], text)
 
 
 def _ldl_factor(n: int, entry, tag: str, what: str, fail: str | None = None) -> tuple[list[str], dict, list[str]]:

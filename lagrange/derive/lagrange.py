@@ -33,7 +33,7 @@ from ..model.coordinates import (
 from ..model.inputs import is_input
 from ..safe_sympify import sympify as _sympify
 from ..simplification import is_zero
-from ..symengine_bridge import FAILURES, Restorer, carries, symengine
+from ..symengine_bridge import FAILURES, carries, symengine, to_symengine
 from .equations import Equations
 from .multipliers import constraint_blocks
 
@@ -214,20 +214,21 @@ def _symengine_derivatives(T, q, qd):
     symbols = set(q) | set(qd) | {t}
     if se is None or not carries([T], symbols):
         return None
-    to_sympy = Restorer(T.free_symbols | symbols)
     n = len(q)
     try:
-        Ts = se.sympify(T)
-        qs, qds, ts = [se.Symbol(v.name) for v in q], [se.Symbol(v.name) for v in qd], se.Symbol(t.name)
+        Ts, *qs, ts = to_symengine([T, *q, *qd, t], T.free_symbols | symbols)
+        qs, qds = qs[:n], qs[n:]
         dT = [Ts.diff(v) for v in qds]
         # derivatives by symbols a ∂T/∂q̇ does not hold are zero: skipped (linear in n for sparse M)
         where_qd, where_q = {v: j for j, v in enumerate(qds)}, {v: j for j, v in enumerate(qs)}
         held = [d.free_symbols for d in dT]
-        hessian = {(i, j): to_sympy(dT[i].diff(qds[j])) for i in range(n)
+        # symbols convert back to the originals (to_symengine), so sympify alone restores the results
+        hessian = {(i, j): sp.sympify(dT[i].diff(qds[j])) for i in range(n)
                    for j in sorted(where_qd[v] for v in held[i] if v in where_qd) if j >= i}
-        conv = [to_sympy(sum((dT[i].diff(qs[j]) * qds[j] for j in sorted(where_q[v] for v in held[i] if v in where_q)),
-                             se.Integer(0)) + dT[i].diff(ts) - Ts.diff(qs[i])) for i in range(n)]
-        return [to_sympy(e) for e in dT], hessian, conv
+        conv = [sp.sympify(sum((dT[i].diff(qs[j]) * qds[j]
+                                for j in sorted(where_q[v] for v in held[i] if v in where_q)),
+                               se.Integer(0)) + dT[i].diff(ts) - Ts.diff(qs[i])) for i in range(n)]
+        return [sp.sympify(e) for e in dT], hessian, conv
     except FAILURES:
         return None
 
@@ -241,8 +242,8 @@ def _pythagoras(expr):
     """Cheap Pythagorean cleanup: expand, then try sin² → 1 − cos² and cos² → 1 − sin²; keep the
     shortest of the three. Collapses the sin²(ωt) + cos²(ωt) left by rotating frames at polynomial cost."""
     e = sp.expand(expr)
-    if not e.has(sp.sin, sp.cos):
-        return e
+    if not any(isinstance(x.base, (sp.sin, sp.cos)) and x.exp.is_Integer and x.exp >= 2 for x in e.atoms(sp.Pow)):
+        return e  # no sin² or cos²: both rewrites below would return e itself
     candidates = [e]
     for f, other in ((sp.sin, sp.cos), (sp.cos, sp.sin)):
 
