@@ -171,7 +171,8 @@ def test_spec_fixed_step_method_and_step_are_honoured(tmp_path, capsys):
     assert status == 0 and "method Radau" in out
 
 
-@pytest.mark.parametrize("method", ["dop853", "Taylor", "AUTO", "rk23", "bdf", "midpoint", "GL6", "verlet", "dg", "Verlet8"])
+@pytest.mark.parametrize("method", ["dop853", "Taylor", "AUTO", "rk23", "bdf", "midpoint", "GL6", "verlet", "dg",
+                                    "Verlet8"])
 def test_every_method_is_reachable_case_insensitively(tmp_path, method, capsys):
     path = spec(tmp_path, OSC)
     fixed = method.lower() in ("midpoint", "gl6", "verlet", "dg", "verlet8")
