@@ -12,6 +12,7 @@ pause after every step).
 
 import json
 import os
+import select
 import signal
 import subprocess
 import sys
@@ -56,8 +57,11 @@ CHILD = textwrap.dedent("""\
 def _interrupt(args: list[str], *, wait: float = 1.0, env: dict | None = None) -> tuple[float, int, str, str]:
     """Start ``args``, wait for its READY line, let it run ``wait`` s, send SIGINT: (seconds until its next
     line, exit status, that line, stderr)."""
+    # Ctrl-C as from a terminal: a process started in the background by a non-interactive shell inherits
+    # SIGINT ignored, and Python then installs no KeyboardInterrupt handler in the child
     proc = subprocess.Popen(args, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
-                            env={**os.environ, **(env or {})})
+                            env={**os.environ, **(env or {})},
+                            preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
     try:
         line = proc.stdout.readline()
         assert line.startswith("READY"), (line, proc.stderr.read())
@@ -65,6 +69,8 @@ def _interrupt(args: list[str], *, wait: float = 1.0, env: dict | None = None) -
         assert proc.poll() is None, "the run ended before the interrupt"
         sent = time.monotonic()
         proc.send_signal(signal.SIGINT)
+        ready, _, _ = select.select([proc.stdout], [], [], 6 * PROMPT)  # never wait forever for the reply
+        assert ready, f"no reply {6 * PROMPT:g} s after SIGINT: the child went on running"
         reply = proc.stdout.readline()
         delay = time.monotonic() - sent
         _, err = proc.communicate(timeout=120)

@@ -3,6 +3,7 @@ deaths, release of unpickled tasks, and Ctrl-C."""
 
 import os
 import pickle
+import select
 import signal
 import subprocess
 import sys
@@ -207,14 +208,17 @@ def test_ctrl_c_stops_a_process_pool_sweep(tmp_path):
             print("INTERRUPTED", flush=True)
             sys.exit(130)
     """)
-    proc = subprocess.Popen([sys.executable, "-c", child], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-    try:
+    proc = subprocess.Popen([sys.executable, "-c", child], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                            preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))  # Ctrl-C as from a
+    try:  # terminal, even when the tests run in the background (which starts children with SIGINT ignored)
         assert proc.stdout.readline().startswith("READY")
         deadline = time.monotonic() + 120
         while time.monotonic() < deadline and not (store.exists() and store.read_text().count("\n") >= 3):
             time.sleep(0.2)
         sent = time.monotonic()
         proc.send_signal(signal.SIGINT)  # to the parent only: its workers are sleeping for an hour
+        ready, _, _ = select.select([proc.stdout], [], [], 120)  # never wait forever for the reply
+        assert ready, "no reply 120 s after SIGINT: the sweep went on running"
         reply = proc.stdout.readline()
         proc.communicate(timeout=60)
         delay = time.monotonic() - sent
