@@ -249,7 +249,7 @@ def test_registry_table_and_names():
     assert registry.find("rk4") is None
     with pytest.raises(MethodError, match="unknown method 'rk4'"):
         registry.get("rk4")
-    assert set(registry.supporting("events")) == {"DOP853", "RK45", "RK23", "LSODA", "Radau", "BDF"}
+    assert set(registry.supporting("events")) == {"DOP853", "RK45", "RK23", "LSODA", "Radau", "BDF", "heyoka"}
     text = registry.table()
     for m in registry.METHODS:
         assert m.name in text
