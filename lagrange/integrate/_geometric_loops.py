@@ -260,33 +260,10 @@ def _combine(z, h, bb, K, s, m, znew):
 
 
 @njit(**_OPTIONS)
-def _verlet_step(mass, lagrangian, t, z, h, p, n, w, znew):
-    """Störmer–Verlet: half kick, drift with q̇ = M⁻¹p, half kick (M constant)."""
-    q, v, M, b, Lq, g, Lqq, Lqv, W, x = w
-    for j in range(2 * n):
-        znew[j] = z[j]
-    ok, _ = _grad(mass, lagrangian, t, znew, p, n, q, v, M, b, Lq, g)
-    if not ok:
-        return SINGULAR_MASS, 0, 0.0
-    for i in range(n):
-        znew[n + i] -= 0.5 * h * g[i]
-    ok, _ = _grad(mass, lagrangian, t, znew, p, n, q, v, M, b, Lq, g)
-    if not ok:
-        return SINGULAR_MASS, 0, 0.0
-    for i in range(n):
-        znew[i] += h * g[n + i]
-    ok, _ = _grad(mass, lagrangian, t + h, znew, p, n, q, v, M, b, Lq, g)
-    if not ok:
-        return SINGULAR_MASS, 0, 0.0
-    for i in range(n):
-        znew[n + i] -= 0.5 * h * g[i]
-    return OK, 0, 0.0
-
-
-@njit(**_OPTIONS)
 def _compose_step(mass, lagrangian, t, z, h, gam, p, n, w, znew):
-    """Störmer–Verlet steps of sizes ``γ_i h`` in turn (M constant): the force after one stage's drift is the
-    force of the next stage's first half kick, so a stage costs one ∇V and one ``M⁻¹p``."""
+    """Störmer–Verlet steps of sizes ``γ_i h`` in turn (M constant; plain Störmer–Verlet is ``γ = (1,)``: half
+    kick, drift with q̇ = M⁻¹p, half kick): the force after one stage's drift is the force of the next stage's
+    first half kick, so a stage costs one ∇V and one ``M⁻¹p``."""
     q, v, M, b, Lq, g, Lqq, Lqv, W, x = w
     for j in range(2 * n):
         znew[j] = z[j]
@@ -405,9 +382,7 @@ def run(scheme, mass, lagrangian, second, A, bb, c, t0, h, steps, stride, p, tol
         if scheme == GAUSS:
             status, its, rnorm = _gauss_step(mass, lagrangian, second, A, bb, c, tk, z, h, p, n, tol, max_iter, w, K,
                                              Ys, R, Jac, Jf, znew)
-        elif scheme == VERLET:
-            status, its, rnorm = _verlet_step(mass, lagrangian, tk, z, h, p, n, w, znew)
-        elif scheme == COMPOSE:
+        elif scheme == VERLET or scheme == COMPOSE:  # Störmer–Verlet is the one-stage composition, γ = (1,)
             status, its, rnorm = _compose_step(mass, lagrangian, tk, z, h, bb, p, n, w, znew)
         else:
             status, its, rnorm = _dg_step(mass, lagrangian, second, tk, z, h, p, n, tol, max_iter, w, zm, d, R, Jac,

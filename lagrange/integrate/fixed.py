@@ -156,9 +156,10 @@ def _run_compiled(hm, scheme, t0, h, steps, stride, y0, where) -> tuple[np.ndarr
         code, (A, b, c) = k.GAUSS, TABLEAUX[scheme.stages]
     elif isinstance(scheme, _Composition):  # the coefficients γ_i travel in b
         code, A, b, c = k.COMPOSE, np.zeros((0, 0)), scheme.gammas, np.zeros(0)
+    elif isinstance(scheme, StormerVerlet):  # the one-stage composition
+        code, A, b, c = k.VERLET, np.zeros((0, 0)), np.ones(1), np.zeros(0)
     else:
-        code, A, b, c = (k.VERLET if isinstance(scheme, StormerVerlet) else k.DG), np.zeros((0, 0)), np.zeros(0), \
-            np.zeros(0)
+        code, A, b, c = k.DG, np.zeros((0, 0)), np.zeros(0), np.zeros(0)
     A, b, c = np.ascontiguousarray(A), np.ascontiguousarray(b), np.ascontiguousarray(c)
     n_rec = steps // stride + 3
     T, Y = np.empty(n_rec), np.empty((n_rec, 2 * n))
