@@ -239,7 +239,8 @@ def equations_fingerprint(eqs: Equations) -> str | None:
     known = _FINGERPRINTS.get(id(eqs))
     if known is not None and known[0]() is eqs:
         return known[1]
-    text = _text(tuple((f.name, getattr(eqs, f.name)) for f in fields(eqs)))
+    identity = getattr(eqs, "_identity", None)  # structural equations: without deriving their expanded fields
+    text = _text(identity() if identity else tuple((f.name, getattr(eqs, f.name)) for f in fields(eqs)))
     return _remember(eqs, None if text is None else _digest("equations", text))
 
 

@@ -1,0 +1,367 @@
+r"""Lagrange's equations that follow the system's structure: kinematics per body, assembled numerically.
+
+For a system whose kinetic energy comes wholly from bodies — point masses at ``x_p(q, t)`` and rigid bodies
+with centre of mass ``x_b(q, t)``, body-axis angular velocity ``ω_b = W_b q̇ + ω_t,b`` and inertia ``I_b`` about
+the centre of mass along the body axes — Lagrange's left side ``d/dt ∂T/∂q̇ − ∂T/∂q`` of
+``T = Σ ½ m |ẋ|² + Σ ½ ωᵀ I ω`` is (Kane & Levinson 1985, ch. 6; Featherstone, *Rigid Body Dynamics
+Algorithms*, 2008, ch. 6 for the composite form)
+
+.. math::
+
+    M &= \sum_p m_p J_p^{\mathsf T} J_p + \sum_b W_b^{\mathsf T} I_b W_b, \\
+    f &= Q - \sum_p m_p J_p^{\mathsf T} a_p
+          - \sum_b W_b^{\mathsf T}\,(I_b \alpha_b + \omega_b \times I_b \omega_b),
+
+with ``J_p = ∂x_p/∂q``, ``v_p = J_p q̇ + ∂x_p/∂t``, the velocity-product (and moving-frame) part of the
+acceleration ``a_p = Σ_r ∂v_p/∂q_r q̇_r + ∂v_p/∂t``, likewise ``α_b = Σ_r ∂ω_b/∂q_r q̇_r + ∂ω_b/∂t``, and
+``Q = −∂V/∂q + F + ∂P/∂q̇ − ∂D/∂q̇`` (:mod:`lagrange.conventions`). The rigid-body term uses Euler's equations
+along the body axes, which hold because ``ω_b`` is the angular velocity of an orthogonal ``R(q, t)`` at every
+q (``d/dt ∂ω/∂q̇_r − ∂ω/∂q_r = ∂ω/∂q̇_r × ω``); a rigid body's kinetic energy about its origin O (Wells 8.10)
+is the same T written about the centre of mass (parallel-axis theorem,
+``I_c = J_O − m(|r̄|² E − r̄ r̄ᵀ)``). The equations are identical in value to
+:func:`lagrange.derive.lagrange.lagrange_equations`; only J, a, W, α and Q are formed symbolically — no
+expanded T, no second derivatives of it — and generated code assembles M and f with small matrix products
+(:mod:`lagrange.codegen.structural_source`).
+
+:class:`StructuralEquations` carries the frozen :class:`Structure`; its fields ``mass_matrix``, ``forcing``,
+``inertial``, ``kinetic`` and ``jacobi`` are today's expanded equations, derived on first access (cached), so
+every analysis sees the same equations as with ``derivation="expanded"``, while compiling and simulating read
+only the structure.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, fields
+
+import sympy as sp
+
+from ..conventions import POWER_FUNCTION_SIGN, RAYLEIGH_SIGN, t
+from ..errors import DeclarationError
+from ..model.bodies import Particle
+from ..model.coordinates import acceleration_symbol, position_symbol, to_symbols, velocity_symbol
+from ..model.inputs import is_input
+from ..model.rigid_body import RigidBody
+from ..model.rotations import Quaternion
+from .equations import Equations
+from .lagrange import gradient
+from .multipliers import constraint_blocks
+
+__all__ = ["PointMass", "Rotor", "Structure", "StructuralEquations", "structural_equations",
+           "structural_refusal", "DERIVATIONS"]
+
+#: the values of ``System(derivation=...)``
+DERIVATIONS = ("auto", "expanded", "structural")
+
+
+@dataclass(frozen=True)
+class PointMass:
+    """A particle, or a rigid body's centre of mass: ``mass``, the nonzero entries ``((i, j), ∂x_i/∂q_j)`` of
+    J (``i`` the Cartesian component 0–2), ``velocity_bias`` ``∂x/∂t`` and ``acceleration_bias`` ``a`` (3 each),
+    in plain symbols."""
+
+    mass: sp.Expr
+    jacobian: tuple
+    velocity_bias: tuple
+    acceleration_bias: tuple
+    name: str = ""
+
+
+@dataclass(frozen=True)
+class Rotor:
+    """A rigid body's rotation: ``inertia`` (3×3 tensor about the centre of mass, body axes), the nonzero
+    entries ``((i, j), ∂ω_i/∂q̇_j)`` of W, ``omega_bias`` ``ω_t`` and ``acceleration_bias`` ``α`` (body axes)."""
+
+    inertia: sp.ImmutableMatrix
+    jacobian: tuple
+    omega_bias: tuple
+    acceleration_bias: tuple
+    name: str = ""
+
+
+@dataclass(frozen=True)
+class Structure:
+    """What generated code needs to assemble ``M q̈ = f``: the point masses, the rotors and
+    ``generalized_force`` ``Q`` (n expressions); ``kinetic`` is T in the compact per-body form (not expanded),
+    ``quadratic`` and ``velocity_free`` its parts ``T₂`` and ``T₀`` (for energy reports)."""
+
+    points: tuple
+    rotors: tuple
+    generalized_force: tuple
+    kinetic: sp.Expr
+    quadratic: sp.Expr
+    velocity_free: sp.Expr
+
+    def expressions(self) -> list:
+        """Every expression of the structure (for free symbols and explicit time)."""
+        out = list(self.generalized_force)
+        for p in self.points:
+            out += [p.mass, *(e for _, e in p.jacobian), *p.velocity_bias, *p.acceleration_bias]
+        for r in self.rotors:
+            out += [*r.inertia, *(e for _, e in r.jacobian), *r.omega_bias, *r.acceleration_bias]
+        return [sp.sympify(e) for e in out]
+
+
+def structural_refusal(T_given, bodies) -> str | None:
+    """Why the structural derivation cannot take a declaration (None when it can)."""
+    if T_given is not None and sp.sympify(T_given) != 0:
+        return ("T is given directly (in whole or in part): the structural derivation needs the kinetic energy "
+                "to come wholly from bodies (Particle, RigidBody)")
+    if not bodies:
+        return "there are no bodies"
+    for b in bodies:
+        if type(b) not in (Particle, RigidBody):
+            return f"body {b!r} is neither a Particle nor a RigidBody"
+        if isinstance(b, RigidBody) and isinstance(b.orientation, Quaternion):
+            return (f"rigid body {b.name or b!r} has a Quaternion orientation, whose ω = 2Eq̇ is the body's angular "
+                    "velocity only on the unit sphere (Euler's equations need it everywhere)")
+        for e in _kinematic_expressions(b):
+            if sp.sympify(e).has(sp.Integral):
+                return f"body {b.name or b!r} has an integral in its kinematics"
+    return None
+
+
+def _kinematic_expressions(b) -> list:
+    """Everything a body's kinetic energy is built from (for validation and the refusal checks)."""
+    if isinstance(b, Particle):
+        return [b.mass, *b.position]
+    return [b.mass, *b.inertia, *b.origin, *b.com, *b.R]
+
+
+def auto_structural(n: int, bodies) -> bool:
+    """The rule of ``derivation="auto"`` for a declaration the structural derivation can take: structural from
+    :data:`AUTO_MIN_COORDINATES` coordinates on (measured in benchmarks/results/nlink_setup.md)."""
+    return n >= AUTO_MIN_COORDINATES
+
+
+#: from this many coordinates ``derivation="auto"`` picks the structural derivation
+AUTO_MIN_COORDINATES = 6
+
+
+def _point(mass, x, q, qd, name: str) -> PointMass:
+    """J, ∂x/∂t and a of a point at ``x`` (3 expressions in plain symbols)."""
+    jac, vbias, abias = [], [], []
+    for i, xi in enumerate(x):
+        xi = sp.sympify(xi)
+        row = gradient(xi, q)
+        xt = sp.diff(xi, t) if t in xi.free_symbols else sp.S.Zero
+        jac += [((i, j), e) for j, e in enumerate(row) if e != 0]
+        v = sp.Add(*(e * qd[j] for j, e in enumerate(row) if e != 0)) + xt
+        vbias.append(xt)
+        abias.append(_velocity_product(v, q, qd))
+    return PointMass(sp.sympify(mass), tuple(jac), tuple(vbias), tuple(abias), name)
+
+
+def _velocity_product(v, q, qd):
+    """``Σ_r ∂v/∂q_r q̇_r + ∂v/∂t`` — d/dt of ``v(q, q̇, t)`` without its q̈ part."""
+    dv = gradient(v, q)
+    out = sp.Add(*(e * qd[r] for r, e in enumerate(dv) if e != 0))
+    return out + sp.diff(v, t) if t in v.free_symbols else out
+
+
+def _rigid(body: RigidBody, coords, q, qd) -> tuple[PointMass, Rotor]:
+    m = sp.sympify(body.mass)
+    com = body.com
+    J = sp.Matrix(body.inertia)
+    if any(c != 0 for c in com):  # parallel-axis theorem: the tensor about the centre of mass
+        J = J - m * ((com.T * com)[0, 0] * sp.eye(3) - com * com.T)
+    point = _point(m, to_symbols(body.centre_of_mass, coords), q, qd, body.name)
+    w = to_symbols(body.angular_velocity, coords)
+    zero = {v: 0 for v in qd}
+    jac, wbias, abias = [], [], []
+    for i in range(3):
+        wi = sp.sympify(w[i])
+        row = gradient(wi, qd)
+        jac += [((i, j), e) for j, e in enumerate(row) if e != 0]
+        wbias.append(wi.xreplace(zero) if t in wi.free_symbols else sp.S.Zero)
+        abias.append(_velocity_product(wi, q, qd))
+    inertia = sp.ImmutableMatrix(to_symbols(J, coords))
+    return point, Rotor(inertia, tuple(jac), tuple(wbias), tuple(abias), body.name)
+
+
+def _kinetic_parts(points, rotors, qd) -> tuple:
+    """(T, T₂, T₀) in the compact per-body form."""
+    T2, T1, T0 = [], [], []
+    for p in points:
+        Jv = [sp.S.Zero] * 3
+        for (i, j), e in p.jacobian:
+            Jv[i] += e * qd[j]
+        T2.append(p.mass * sp.Add(*(a**2 for a in Jv)) / 2)
+        T1.append(p.mass * sp.Add(*(a * b for a, b in zip(Jv, p.velocity_bias))))
+        T0.append(p.mass * sp.Add(*(b**2 for b in p.velocity_bias)) / 2)
+    for r in rotors:
+        Wv = [sp.S.Zero] * 3
+        for (i, j), e in r.jacobian:
+            Wv[i] += e * qd[j]
+        Wv, wt, I = sp.Matrix(Wv), sp.Matrix(r.omega_bias), sp.Matrix(r.inertia)
+        T2.append((Wv.T * I * Wv)[0, 0] / 2)
+        T1.append((Wv.T * I * wt)[0, 0])
+        T0.append((wt.T * I * wt)[0, 0] / 2)
+    T2, T1, T0 = sp.Add(*T2), sp.Add(*T1), sp.Add(*T0)
+    return T2 + T1 + T0, T2, T0
+
+
+def structural_equations(system) -> StructuralEquations:
+    """The structural derivation of ``system`` (see the module docstring).
+
+    Preconditions: the kinetic energy comes wholly from Particle and RigidBody bodies (no ``T`` argument),
+    no Quaternion orientation, no integrals in the kinematics (:func:`structural_refusal`); the
+    :class:`~lagrange.System` checks them when ``derivation="structural"`` is asked for.
+
+    Raises
+    ------
+    DeclarationError
+        A precondition does not hold (the reason is named).
+    """
+    bodies = getattr(system, "_kinematic_bodies", system.bodies)
+    why = structural_refusal(getattr(system, "T_given", 0), bodies)
+    if why is not None:
+        raise DeclarationError(f"derivation='structural' is not available: {why}; use derivation='expanded'")
+    coords = system.coordinates
+    q = tuple(position_symbol(c) for c in coords)
+    qd = tuple(velocity_symbol(c) for c in coords)
+    qdd = tuple(acceleration_symbol(c) for c in coords)
+    n = len(q)
+    points, rotors = [], []
+    for b in bodies:
+        if isinstance(b, Particle):
+            points.append(_point(b.mass, to_symbols(b.position, coords), q, qd, b.name))
+        else:
+            pt, rot = _rigid(b, coords, q, qd)
+            points.append(pt)
+            rotors.append(rot)
+    V = to_symbols(system.V, coords)
+    P = to_symbols(system.P, coords)
+    D = to_symbols(system.rayleigh, coords)
+    F = [to_symbols(system.forces[c], coords) for c in coords]
+    dV, dP, dD = gradient(V, q), gradient(P, qd), gradient(D, qd)
+    dissipative = [POWER_FUNCTION_SIGN * dP[i] + RAYLEIGH_SIGN * dD[i] for i in range(n)]
+    nonconservative = tuple(F[i] + dissipative[i] for i in range(n))
+    Q = tuple(nonconservative[i] - dV[i] for i in range(n))
+    T, T2, T0 = _kinetic_parts(points, rotors, qd)
+    structure = Structure(tuple(points), tuple(rotors), Q, T, T2, T0)
+
+    blocks = constraint_blocks(system.constraints, coords, q, qd) if system.constraints else {}
+    L = T - V
+    jacobi_rate = -sp.diff(L, t) + sp.Add(*(v * Qn for v, Qn in zip(qd, nonconservative)))
+    if blocks:
+        B, lam = blocks["reaction_matrix"], blocks["multipliers"]
+        jacobi_rate += sum((lam[k] * B[j, k] * qd[j] for k in range(B.cols) for j in range(n)), sp.S.Zero)
+
+    internal = set(q) | set(qd) | set(qdd) | {t}
+    everything = [*structure.expressions(), V, P, D, *F]
+    everything += [to_symbols(c.velocity, coords) for c in system.constraints]
+    everything += [to_symbols(c.position, coords) for c in system.constraints if c.position is not None]
+    for c in system.constraints:
+        if c.friction:
+            mu, vs, normal = c.friction
+            everything += [to_symbols(sp.sympify(e), coords) for e in (mu, *(vs if isinstance(vs, tuple) else (vs,)),
+                                                                       normal)]
+    params = set().union(*(sp.sympify(e).free_symbols for e in everything)) - internal
+    inputs = {s for s in params if is_input(s)}
+    params -= inputs
+    cheap = dict(
+        coordinates=tuple(coords), q=q, qd=qd, qdd=qdd,
+        parameters=tuple(sorted(params, key=lambda s: s.name)),
+        potential_gradient=tuple(dV), applied=tuple(F), dissipative=tuple(dissipative),
+        nonconservative=nonconservative, potential=V, power_function=P, rayleigh=D, jacobi_rate=jacobi_rate,
+        name=system.name, **blocks, inputs=tuple(sorted(inputs, key=lambda s: s.name)),
+    )
+    return StructuralEquations._create(structure, system, cheap)
+
+
+#: fields of :class:`Equations` a :class:`StructuralEquations` derives only on first access (by the expanded
+#: derivation): everything else is in the structure or cheap
+LAZY_FIELDS = frozenset({"mass_matrix", "forcing", "inertial", "kinetic", "jacobi"})
+
+
+class StructuralEquations(Equations):
+    """:class:`~lagrange.derive.equations.Equations` with a frozen :attr:`structure` (see the module docstring).
+
+    ``mass_matrix``, ``forcing``, ``inertial``, ``kinetic`` and ``jacobi`` are today's expanded equations, derived
+    on first access (:meth:`expanded`) and cached, so they are exactly those of ``derivation="expanded"``; the
+    other fields are set on construction. Equality, hashing and pickling use the structure and the cheap
+    fields, never the expansion. ``dataclasses.replace`` of a structural equations object gives a plain
+    :class:`Equations` (expanded) with the change: the structure would no longer describe it.
+
+    Code generation (``backend="python"``/``"numba"``) assembles M and f from the structure
+    (:mod:`lagrange.codegen.structural_source`). Backends that need the whole right-hand side as one
+    expression — ``method="taylor"`` (its tape), heyoka, the C interpreter, the reference backend, the
+    vectorized ``rhs_many`` kernel — read the expanded fields.
+    """
+
+    def __new__(cls, *args, **kwargs):
+        if args or kwargs:  # dataclasses.replace / direct construction: a plain (expanded) Equations
+            return Equations(*args, **kwargs)
+        return object.__new__(cls)
+
+    @classmethod
+    def _create(cls, structure: Structure, system, cheap: dict) -> StructuralEquations:
+        obj = object.__new__(cls)
+        defaults = {f.name: f.default for f in fields(Equations) if f.name not in LAZY_FIELDS}
+        for name, value in {**defaults, **cheap}.items():
+            object.__setattr__(obj, name, value)
+        object.__setattr__(obj, "structure", structure)
+        object.__setattr__(obj, "_system", system)
+        return obj
+
+    def __getattr__(self, name):
+        if name in LAZY_FIELDS:
+            value = getattr(self.expanded(), name)
+            object.__setattr__(self, name, value)
+            return value
+        raise AttributeError(f"{type(self).__name__!r} object has no attribute {name!r}")
+
+    def expanded(self) -> Equations:
+        """Today's equations of the same system (:func:`lagrange.derive.lagrange.lagrange_equations`), derived
+        once."""
+        e = self.__dict__.get("_expanded")
+        if e is None:
+            from .lagrange import lagrange_equations
+
+            e = lagrange_equations(self._system)
+            object.__setattr__(self, "_expanded", e)
+        return e
+
+    def _identity(self) -> tuple:
+        """What equality, hashing and the cache fingerprint compare: the cheap fields and the structure."""
+        s = self.structure
+        points = tuple((p.mass, p.jacobian, p.velocity_bias, p.acceleration_bias) for p in s.points)
+        rotors = tuple((r.inertia, r.jacobian, r.omega_bias, r.acceleration_bias) for r in s.rotors)
+        return tuple((f.name, getattr(self, f.name)) for f in fields(Equations) if f.name not in LAZY_FIELDS) + (
+            ("structure", (points, rotors, s.generalized_force, s.kinetic)),)
+
+    def __hash__(self) -> int:
+        h = self.__dict__.get("_hash")
+        if h is None:
+            h = hash(self._identity())
+            object.__setattr__(self, "_hash", h)
+        return h
+
+    def __eq__(self, other: object) -> bool:
+        if self is other:
+            return True
+        if other.__class__ is not self.__class__:
+            return NotImplemented
+        return self._identity() == other._identity()
+
+    def __getstate__(self) -> dict:
+        skip = {"_hash", "_expanded", *LAZY_FIELDS}
+        return {k: v for k, v in self.__dict__.items() if k not in skip}
+
+    def __setstate__(self, state: dict) -> None:
+        self.__dict__.update(state)
+
+    @property
+    def is_structural(self) -> bool:
+        return True
+
+    @property
+    def is_autonomous(self) -> bool:
+        """True when t appears nowhere in the structure (kinematics, Q) nor in the constraint blocks."""
+        exprs = self.structure.expressions() + list(self.constraint_bias) + list(self.constraint_rhs)
+        return not any(t in e.free_symbols for e in exprs) and t not in self.constraint_matrix.free_symbols
+
+    def energy_parts(self) -> tuple:
+        """``(T, h, T₂, T₀)`` from the structure: T in the compact per-body form, ``h = T₂ − T₀ + V``."""
+        s = self.structure
+        return s.kinetic, s.quadratic - s.velocity_free + self.potential, s.quadratic, s.velocity_free
