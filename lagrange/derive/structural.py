@@ -137,45 +137,93 @@ def auto_structural(n: int, bodies) -> bool:
 AUTO_MIN_COORDINATES = 6
 
 
-def _point(mass, x, q, qd, name: str) -> PointMass:
-    """J, ∂x/∂t and a of a point at ``x`` (3 expressions in plain symbols)."""
-    jac, vbias, abias = [], [], []
-    for i, xi in enumerate(x):
-        xi = sp.sympify(xi)
-        row = gradient(xi, q)
-        xt = sp.diff(xi, t) if t in xi.free_symbols else sp.S.Zero
-        jac += [((i, j), e) for j, e in enumerate(row) if e != 0]
-        v = sp.Add(*(e * qd[j] for j, e in enumerate(row) if e != 0)) + xt
-        vbias.append(xt)
-        abias.append(_velocity_product(v, q, qd))
-    return PointMass(sp.sympify(mass), tuple(jac), tuple(vbias), tuple(abias), name)
+def _positions(xs: list, q, qd) -> list:
+    """``(J row, ∂x/∂t, a)`` of each position expression ``x(q, t)`` (plain symbols): ``J = ∂x/∂q`` (list of n),
+    ``a = Σ_r ∂v/∂q_r q̇_r + ∂v/∂t`` with ``v = J q̇ + ∂x/∂t``."""
+    return _kinematics(xs, q, qd, velocity=False)
 
 
-def _velocity_product(v, q, qd):
-    """``Σ_r ∂v/∂q_r q̇_r + ∂v/∂t`` — d/dt of ``v(q, q̇, t)`` without its q̈ part."""
-    dv = gradient(v, q)
-    out = sp.Add(*(e * qd[r] for r, e in enumerate(dv) if e != 0))
-    return out + sp.diff(v, t) if t in v.free_symbols else out
+def _rates(ws: list, q, qd) -> list:
+    """``(W row, ω_t, α)`` of each expression ``ω(q, q̇, t)`` linear in q̇: ``W = ∂ω/∂q̇``, ``ω_t = ω|_{q̇=0}``,
+    ``α = Σ_r ∂ω/∂q_r q̇_r + ∂ω/∂t``."""
+    return _kinematics(ws, q, qd, velocity=True)
 
 
-def _rigid(body: RigidBody, coords, q, qd) -> tuple[PointMass, Rotor]:
+def _kinematics(exprs: list, q, qd, velocity: bool) -> list:
+    """The derivatives of :func:`_positions` / :func:`_rates`: by symengine when installed and it carries the
+    expressions exactly (:func:`lagrange.symengine_bridge.carries`; the results convert back by ``sympify``),
+    else by sympy (:func:`lagrange.derive.lagrange.gradient`, sparse)."""
+    exprs = [sp.sympify(e) for e in exprs]
+    fast = _symengine_kinematics(exprs, q, qd, velocity)
+    if fast is not None:
+        return fast
+    out = []
+    zero = {v: 0 for v in qd}
+    for e in exprs:
+        row = gradient(e, qd if velocity else q)
+        if velocity:
+            bias = e.xreplace(zero) if t in e.free_symbols else sp.S.Zero
+            v = e
+        else:
+            bias = sp.diff(e, t) if t in e.free_symbols else sp.S.Zero
+            v = sp.Add(*(d * qd[j] for j, d in enumerate(row) if d != 0)) + bias
+        dv = gradient(v, q)
+        rate = sp.Add(*(d * qd[r] for r, d in enumerate(dv) if d != 0))
+        if t in v.free_symbols:
+            rate += sp.diff(v, t)
+        out.append((row, bias, rate))
+    return out
+
+
+def _symengine_kinematics(exprs, q, qd, velocity: bool):
+    from ..symengine_bridge import FAILURES, carries, symengine, to_symengine
+
+    se = symengine()
+    symbols = set(q) | set(qd) | {t}
+    if se is None or not exprs or not carries(exprs, symbols):
+        return None
+    n = len(q)
+    free = set().union(*(e.free_symbols for e in exprs)) | symbols
+    try:
+        conv = to_symengine([*exprs, *q, *qd, t], free)
+        es, qs, qds, ts = conv[:len(exprs)], conv[len(exprs):len(exprs) + n], conv[len(exprs) + n:-1], conv[-1]
+        zero = {v: se.Integer(0) for v in qds}
+        out = []
+        for e in es:
+            held = e.free_symbols
+            wrt = qds if velocity else qs
+            row = [e.diff(v) if v in held else se.Integer(0) for v in wrt]
+            if velocity:
+                bias = e.xreplace(zero) if ts in held else se.Integer(0)
+                v = e
+            else:
+                bias = e.diff(ts) if ts in held else se.Integer(0)
+                v = sum((d * qds[j] for j, d in enumerate(row) if d != 0), se.Integer(0)) + bias
+            vheld = v.free_symbols
+            rate = sum((v.diff(qs[r]) * qds[r] for r in range(n) if qs[r] in vheld), se.Integer(0))
+            if ts in vheld:
+                rate += v.diff(ts)
+            out.append(([sp.sympify(d) for d in row], sp.sympify(bias), sp.sympify(rate)))
+        return out
+    except FAILURES:
+        return None
+
+
+def _point(mass, kin, name: str) -> PointMass:
+    """The :class:`PointMass` of the three components' ``(J row, ∂x/∂t, a)``."""
+    jac = tuple(((i, j), e) for i, (row, _, _) in enumerate(kin) for j, e in enumerate(row) if e != 0)
+    return PointMass(sp.sympify(mass), jac, tuple(k[1] for k in kin), tuple(k[2] for k in kin), name)
+
+
+def _rotor(body: RigidBody, coords, kin) -> Rotor:
     m = sp.sympify(body.mass)
     com = body.com
     J = sp.Matrix(body.inertia)
     if any(c != 0 for c in com):  # parallel-axis theorem: the tensor about the centre of mass
         J = J - m * ((com.T * com)[0, 0] * sp.eye(3) - com * com.T)
-    point = _point(m, to_symbols(body.centre_of_mass, coords), q, qd, body.name)
-    w = to_symbols(body.angular_velocity, coords)
-    zero = {v: 0 for v in qd}
-    jac, wbias, abias = [], [], []
-    for i in range(3):
-        wi = sp.sympify(w[i])
-        row = gradient(wi, qd)
-        jac += [((i, j), e) for j, e in enumerate(row) if e != 0]
-        wbias.append(wi.xreplace(zero) if t in wi.free_symbols else sp.S.Zero)
-        abias.append(_velocity_product(wi, q, qd))
+    jac = tuple(((i, j), e) for i, (row, _, _) in enumerate(kin) for j, e in enumerate(row) if e != 0)
     inertia = sp.ImmutableMatrix(to_symbols(J, coords))
-    return point, Rotor(inertia, tuple(jac), tuple(wbias), tuple(abias), body.name)
+    return Rotor(inertia, jac, tuple(k[1] for k in kin), tuple(k[2] for k in kin), body.name)
 
 
 def _kinetic_parts(points, rotors, qd) -> tuple:
@@ -221,14 +269,12 @@ def structural_equations(system) -> StructuralEquations:
     qd = tuple(velocity_symbol(c) for c in coords)
     qdd = tuple(acceleration_symbol(c) for c in coords)
     n = len(q)
-    points, rotors = [], []
-    for b in bodies:
-        if isinstance(b, Particle):
-            points.append(_point(b.mass, to_symbols(b.position, coords), q, qd, b.name))
-        else:
-            pt, rot = _rigid(b, coords, q, qd)
-            points.append(pt)
-            rotors.append(rot)
+    positions = [to_symbols(b.position if isinstance(b, Particle) else b.centre_of_mass, coords) for b in bodies]
+    spinning = [b for b in bodies if isinstance(b, RigidBody)]
+    pkin = _positions([e for x in positions for e in x], q, qd)
+    rkin = _rates([e for b in spinning for e in to_symbols(b.angular_velocity, coords)], q, qd)
+    points = [_point(b.mass, pkin[3 * k:3 * k + 3], b.name) for k, b in enumerate(bodies)]
+    rotors = [_rotor(b, coords, rkin[3 * k:3 * k + 3]) for k, b in enumerate(spinning)]
     V = to_symbols(system.V, coords)
     P = to_symbols(system.P, coords)
     D = to_symbols(system.rayleigh, coords)
