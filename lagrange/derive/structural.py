@@ -359,14 +359,40 @@ class StructuralEquations(Equations):
 
     def expanded(self) -> Equations:
         """Today's equations of the same system (:func:`lagrange.derive.lagrange.lagrange_equations`), derived
-        once."""
+        once (with the replacements of :meth:`with_replaced_forces` applied)."""
         e = self.__dict__.get("_expanded")
         if e is None:
-            from .lagrange import lagrange_equations
+            replaced = self.__dict__.get("_replaced")
+            if replaced is not None:
+                from ..codegen.switches import _replace_in
 
-            e = lagrange_equations(self._system)
+                parent, mapping, new_params = replaced
+                e = _replace_in(parent.expanded(), mapping, new_params)
+            else:
+                from .lagrange import lagrange_equations
+
+                e = lagrange_equations(self._system)
             object.__setattr__(self, "_expanded", e)
         return e
+
+    def with_replaced_forces(self, mapping: dict, new_params: tuple = ()) -> StructuralEquations:
+        """These equations with ``mapping`` (``xreplace``) applied to Q and the force fields (``applied``,
+        ``dissipative``, ``nonconservative``, ``jacobi_rate``) and ``new_params`` appended to the parameters —
+        the friction driver's regularized or frozen ``sign`` terms, which live in Q only."""
+
+        def sub(e):
+            return sp.sympify(e).xreplace(mapping)
+
+        s = self.structure
+        structure = Structure(s.points, s.rotors, tuple(sub(e) for e in s.generalized_force), s.kinetic,
+                              s.quadratic, s.velocity_free)
+        cheap = {f.name: getattr(self, f.name) for f in fields(Equations) if f.name not in LAZY_FIELDS}
+        cheap.update(applied=tuple(sub(e) for e in self.applied), dissipative=tuple(sub(e) for e in self.dissipative),
+                     nonconservative=tuple(sub(e) for e in self.nonconservative), jacobi_rate=sub(self.jacobi_rate),
+                     parameters=self.parameters + tuple(new_params))
+        out = StructuralEquations._create(structure, self._system, cheap)
+        object.__setattr__(out, "_replaced", (self, mapping, tuple(new_params)))
+        return out
 
     def _identity(self) -> tuple:
         """What equality, hashing and the cache fingerprint compare: the cheap fields and the structure."""
