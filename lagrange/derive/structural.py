@@ -31,7 +31,7 @@ only the structure.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, fields
+from dataclasses import dataclass, fields, replace
 
 import sympy as sp
 
@@ -315,6 +315,20 @@ def structural_equations(system) -> StructuralEquations:
     return StructuralEquations._create(structure, system, cheap)
 
 
+def _replaced(eqs: Equations, mapping: dict, new_params: tuple) -> Equations:
+    """``eqs`` with ``mapping`` applied to its force fields and ``new_params`` appended (as
+    :func:`lagrange.codegen.switches.switched_equations` does to expanded equations)."""
+
+    def sub(e):
+        return e.xreplace(mapping)
+
+    return replace(eqs, forcing=sp.ImmutableMatrix([sub(e) for e in eqs.forcing]),
+                   dissipative=tuple(sub(e) for e in eqs.dissipative),
+                   nonconservative=tuple(sub(e) for e in eqs.nonconservative),
+                   applied=tuple(sub(e) for e in eqs.applied), jacobi_rate=sub(eqs.jacobi_rate),
+                   parameters=eqs.parameters + tuple(new_params))
+
+
 #: fields of :class:`Equations` a :class:`StructuralEquations` derives only on first access (by the expanded
 #: derivation): everything else is in the structure or cheap
 LAZY_FIELDS = frozenset({"mass_matrix", "forcing", "inertial", "kinetic", "jacobi"})
@@ -364,10 +378,8 @@ class StructuralEquations(Equations):
         if e is None:
             replaced = self.__dict__.get("_replaced")
             if replaced is not None:
-                from ..codegen.switches import _replace_in
-
                 parent, mapping, new_params = replaced
-                e = _replace_in(parent.expanded(), mapping, new_params)
+                e = _replaced(parent.expanded(), mapping, new_params)
             else:
                 from .lagrange import lagrange_equations
 

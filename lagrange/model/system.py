@@ -218,7 +218,7 @@ class System:
             problems.append("no kinetic energy: give T or bodies (e.g. Particle(m, (x, y)))")
         T_given = prep(0 if T is None else T, "T")
         refusal = structural_refusal(T_given, bodies)
-        if derivation == "structural" and refusal is not None and bodies:
+        if derivation == "structural" and refusal is not None:
             problems.append(f"derivation='structural' is not available: {refusal}; use derivation='expanded'")
         structural = refusal is None and (derivation == "structural"
                                           or (derivation == "auto" and auto_structural(len(coords), bodies)))
