@@ -79,6 +79,8 @@ UNKEYED_ATTRIBUTES = {
     "bodies": "their kinetic energy is in T and their constraints in constraints",
     "T_given": "part of T",
     "description": "text only",
+    "derivation": "only expanded derivations are cached (structural ones are derived directly, in a fraction of it)",
+    "_kinematic_bodies": "the bodies with prescribed motion substituted: in T",
 }
 
 
