@@ -160,70 +160,107 @@ def _rows(eqs: StructuralEquations) -> list:
     return rows
 
 
-def structural_source(eqs: StructuralEquations, *, n_params: int, flavour: str = "python",
-                      constraint_rhs=None, name: str = "rhs") -> str:
-    """Source of ``rhs(t, y, p)`` (with its helper functions) for structural equations.
-
-    ``flavour``: ``"python"`` (numpy), ``"numba"`` (loops; returns a new array) or ``"numba_status"``
-    (unconstrained only: ``name(t, y, p, out) -> ok`` writing ``[q̇, q̈]`` into ``out``). With constraints the
-    result is ``[q̇, q̈, λ]``. ``constraint_rhs`` replaces c (Baumgarte terms).
-    """
-    n, m = eqs.n, eqs.m
-    if flavour == "numba_status" and m:
-        raise ValueError("flavour='numba_status' is for unconstrained systems (no multipliers)")
-    s = eqs.structure
+def _collect(eqs: StructuralEquations, constraint_rhs) -> tuple[list, list]:
+    """The rows of the stacked point Jacobian and ``(kind, key, expression)`` of every nonzero input of the
+    assembly: ``J (r, j)``, ``w r`` (mass of row r), ``g r`` (its a), ``f i`` (Q), ``W (k, i, j)``, ``om (k, i)``
+    (ω_t), ``al (k, i)``, ``I (k, i, j)``, ``A (r, j)``, ``c r``, ``B (j, r)`` (rough constraints only)."""
+    n, m, s = eqs.n, eqs.m, eqs.structure
     rows = _rows(eqs)
     index = {(k, i): r for r, (k, i) in enumerate(rows)}
-    exprs: list = []
-    slots: list[tuple[str, object]] = []  # (target text, expression index)
+    items: list = []
 
-    def put(target: str, e) -> None:
+    def put(kind, key, e):
         e = sp.sympify(e)
         if e != 0:
-            slots.append((target, len(exprs)))
-            exprs.append(e)
+            items.append((kind, key, e))
 
     for k, p in enumerate(s.points):
         for (i, j), e in p.jacobian:
-            put(f"J[{index[k, i]}, {j}]", e)
+            put("J", (index[k, i], j), e)
         for i in range(3):
             if (k, i) in index:
-                put(f"w[{index[k, i]}]", p.mass)
-                put(f"g[{index[k, i]}]", p.acceleration_bias[i])
+                put("w", index[k, i], p.mass)
+                put("g", index[k, i], p.acceleration_bias[i])
     for i, e in enumerate(s.generalized_force):
-        put(f"f[{i}]", e)
+        put("f", i, e)
     for k, r in enumerate(s.rotors):
         for (i, j), e in r.jacobian:
-            put(f"W{k}[{i}, {j}]", e)
+            put("W", (k, i, j), e)
         for i in range(3):
-            put(f"om{k}[{i}]", r.omega_bias[i])
-            put(f"al{k}[{i}]", r.acceleration_bias[i])
+            put("om", (k, i), r.omega_bias[i])
+            put("al", (k, i), r.acceleration_bias[i])
             for j in range(3):
-                put(f"I{k}[{i}, {j}]", r.inertia[i, j])
+                put("I", (k, i, j), r.inertia[i, j])
     A = eqs.constraint_matrix
     crhs = list(constraint_rhs) if constraint_rhs is not None else list(eqs.constraint_rhs)
     for r in range(m):
         for j in range(n):
-            put(f"A[{r}, {j}]", A[r, j])
-        put(f"c[{r}]", crhs[r])
-    rough = eqs.is_rough
-    if rough:
+            put("A", (r, j), A[r, j])
+        put("c", r, crhs[r])
+    if eqs.is_rough:
         B = eqs.reaction_matrix
         for j in range(n):
             for r in range(m):
-                put(f"B[{j}, {r}]", B[j, r])
-    repl, red = _printable_cse(exprs, rename_map(eqs))
+                put("B", (j, r), B[j, r])
+    return rows, items
 
-    body: list[str] = []
+
+#: the python flavour prints M and f as straight-line scalar code (then the unrolled LDLᵀ of
+#: :mod:`lagrange.codegen.source`) when assembling and solving takes at most this many products
+#: (:func:`_scalar_work`), else numpy arrays. Measured per call (medians, one process): bicycle (1,553) 275 µs
+#: straight-line against 1,813 µs with numpy (dozens of small-array calls and solves at several µs each);
+#: 15-link pendulum (1,922) 548 against 655 µs; 20-link (about 4,400) 1,268 against 398 µs.
+SCALAR_LIMIT = 2500
+
+
+def _scalar_work(eqs: StructuralEquations, rows, items) -> int:
+    n, m = eqs.n, eqs.m
+    per_row: dict = {}
+    for kind, key, _ in items:
+        if kind == "J":
+            per_row[key[0]] = per_row.get(key[0], 0) + 1
+    work = sum(c * (c + 1) // 2 for c in per_row.values())
+    work += len(eqs.structure.rotors) * (9 * n + 3 * n * (n + 1) // 2)
+    return work + m * n * n + n ** 3 // 6 + m * n * n
+
+
+def structural_source(eqs: StructuralEquations, *, n_params: int, flavour: str = "python",
+                      constraint_rhs=None, name: str = "rhs") -> str:
+    """Source of ``rhs(t, y, p)`` (with its helper functions) for structural equations.
+
+    ``flavour``: ``"python"`` (straight-line scalar code up to :data:`SCALAR_LIMIT` products, numpy above),
+    ``"numba"`` (loops; returns a new array) or ``"numba_status"`` (unconstrained only:
+    ``name(t, y, p, out) -> ok`` writing ``[q̇, q̈]`` into ``out``). With constraints the result is
+    ``[q̇, q̈, λ]``. ``constraint_rhs`` replaces c (Baumgarte terms).
+    """
+    n, m = eqs.n, eqs.m
+    if flavour == "numba_status" and m:
+        raise ValueError("flavour='numba_status' is for unconstrained systems (no multipliers)")
+    rows, items = _collect(eqs, constraint_rhs)
+    repl, red = _printable_cse([e for _, _, e in items], rename_map(eqs))
+    head: list[str] = []
     ys = [f"y{i}" for i in range(2 * n)]
     ps = [f"p{k}" for k in range(n_params)]
     if flavour == "python":
-        body.append(f"{', '.join(ys)}, = y.tolist()")
+        head.append(f"{', '.join(ys)}, = y.tolist()")
         if ps:
-            body.append(f"{', '.join(ps)}, = p")
+            head.append(f"{', '.join(ps)}, = p")
     else:
-        body += [f"y{i} = y[{i}]" for i in range(2 * n)]
-        body += [f"p{k} = p[{k}]" for k in range(n_params)]
+        head += [f"y{i} = y[{i}]" for i in range(2 * n)]
+        head += [f"p{k} = p[{k}]" for k in range(n_params)]
+    head += [f"{sym} = {print_expr(e)}" for sym, e in repl]
+    printed = [(kind, key, print_expr(e)) for (kind, key, _), e in zip(items, red)]
+    if flavour == "python" and _scalar_work(eqs, rows, items) <= SCALAR_LIMIT:
+        return _scalar_source(eqs, rows, printed, head, name)
+    return _array_source(eqs, rows, printed, head, flavour, name)
+
+
+def _array_source(eqs, rows, printed, head, flavour: str, name: str) -> str:
+    n, m = eqs.n, eqs.m
+    s = eqs.structure
+    rough = eqs.is_rough
+    ys = [f"y{i}" for i in range(2 * n)]
+    body = []
     body.append(f"J = np.zeros(({len(rows)}, {n}))")
     body.append(f"w = np.zeros({len(rows)})")
     body.append(f"g = np.zeros({len(rows)})")
@@ -235,8 +272,13 @@ def structural_source(eqs: StructuralEquations, *, n_params: int, flavour: str =
         body += [f"A = np.zeros(({m}, {n}))", f"c = np.zeros({m})"]
         if rough:
             body.append(f"B = np.zeros(({n}, {m}))")
-    body += [f"{sym} = {print_expr(e)}" for sym, e in repl]
-    body += [f"{target} = {print_expr(red[i])}" for target, i in slots]
+    body = head + body
+    target = {"J": lambda k: f"J[{k[0]}, {k[1]}]", "w": lambda k: f"w[{k}]", "g": lambda k: f"g[{k}]",
+              "f": lambda k: f"f[{k}]", "W": lambda k: f"W{k[0]}[{k[1]}, {k[2]}]",
+              "om": lambda k: f"om{k[0]}[{k[1]}]", "al": lambda k: f"al{k[0]}[{k[1]}]",
+              "I": lambda k: f"I{k[0]}[{k[1]}, {k[2]}]", "A": lambda k: f"A[{k[0]}, {k[1]}]",
+              "c": lambda k: f"c[{k}]", "B": lambda k: f"B[{k[0]}, {k[1]}]"}
+    body += [f"{target[kind](key)} = {text}" for kind, key, text in printed]
     body.append(f"M = _gram(J, w, {n})")
     body.append(f"f = f - _tmv(J, w * g, {n})")
     if s.rotors:
@@ -258,12 +300,17 @@ def structural_source(eqs: StructuralEquations, *, n_params: int, flavour: str =
         outs_len = 2 * n
     else:
         body += [f"Ma = M + _gram(A, np.ones({m}), {n})", f"fa = f + _tmv(A, c, {n})",
-                 f"L, ok = _factor(Ma, {n})", "if not ok:", f"    {fail}", f"xf = _csolve(L, fa, {n})",
-                 f"XA = np.zeros(({n}, {m}))"]
-        col = "B[:, r].copy()" if rough else "A[r].copy()"
-        body += [f"for r in range({m}):", f"    XA[:, r] = _csolve(L, {col}, {n})",
-                 f"S = np.zeros(({m}, {m}))", f"for r in range({m}):", "    S[r] = _mv(XA.T.copy(), A[r].copy())",
-                 "rr = c - _mv(A, xf)"]
+                 f"L, ok = _factor(Ma, {n})", "if not ok:", f"    {fail}"]
+        col = "B" if rough else "A.T"
+        if flavour == "python":  # one pair of triangular solves for f and every column of B
+            body += [f"X = _csolve(L, np.column_stack((fa, {col})), {n})", "xf = X[:, 0]", "XA = X[:, 1:]",
+                     "S = A @ XA", "rr = c - A @ xf"]
+        else:
+            col = "B[:, r].copy()" if rough else "A[r].copy()"
+            body += [f"xf = _csolve(L, fa, {n})", f"XA = np.zeros(({n}, {m}))",
+                     f"for r in range({m}):", f"    XA[:, r] = _csolve(L, {col}, {n})",
+                     f"S = np.zeros(({m}, {m}))", f"for r in range({m}):",
+                     "    S[r] = _mv(XA.T.copy(), A[r].copy())", "rr = c - _mv(A, xf)"]
         if rough:
             body.append("lam = _lsolve(S, rr)")
         else:
@@ -275,7 +322,7 @@ def structural_source(eqs: StructuralEquations, *, n_params: int, flavour: str =
     if flavour == "numba_status":
         body += [f"out[{i}] = y{n + i}" for i in range(n)] + [f"out[{n + i}] = x[{i}]" for i in range(n)]
         body.append("return True")
-        head = f"def {name}(t, y, p, out):\n"
+        top = f"def {name}(t, y, p, out):\n"
     else:
         body.append(f"out = np.empty({outs_len})")
         body += [f"out[{i}] = y{n + i}" for i in range(n)]
@@ -283,11 +330,107 @@ def structural_source(eqs: StructuralEquations, *, n_params: int, flavour: str =
         if m:
             body.append(f"out[{2 * n}:] = lam")
         body.append("return out")
-        head = f"def {name}(t, y, p):\n"
+        top = f"def {name}(t, y, p):\n"
     helpers = _PY_HELPERS if flavour == "python" else _NUMBA_HELPERS
-    main = head + "\n".join("    " + line for line in body) + "\n"
+    main = top + "\n".join("    " + line for line in body) + "\n"
     prefix = "import math\nimport numpy as np\n" if flavour == "python" else ""
     return prefix + helpers.strip("\n") + "\n\n\n" + main
+
+
+def _scalar_source(eqs, rows, printed, head, name: str) -> str:
+    """Straight-line python: M's upper triangle ``a{i}_{j}`` and f ``b{i}`` summed from the named J, W, I, …
+    entries, then :mod:`lagrange.codegen.source`'s unrolled LDLᵀ (and its Schur complement with constraints,
+    on the augmented ``M + AᵀA``, ``f + Aᵀc`` as there)."""
+    from .source import _constrained_lines, _ldl_factor, _ldl_solve
+
+    n, m = eqs.n, eqs.m
+    s = eqs.structure
+    name_of = {"J": lambda k: f"j{k[0]}_{k[1]}", "w": lambda k: f"w{k}", "g": lambda k: f"g{k}",
+               "f": lambda k: f"q{k}", "W": lambda k: f"W{k[0]}_{k[1]}_{k[2]}", "om": lambda k: f"om{k[0]}_{k[1]}",
+               "al": lambda k: f"al{k[0]}_{k[1]}", "I": lambda k: f"I{k[0]}_{k[1]}_{k[2]}",
+               "A": lambda k: f"k{k[0]}_{k[1]}", "c": lambda k: f"e{k}", "B": lambda k: f"h{k[0]}_{k[1]}"}
+    present = {(kind, key) for kind, key, _ in printed}
+    body = head + [f"{name_of[kind](key)} = {text}" for kind, key, text in printed]
+
+    def nm(kind, key):
+        return name_of[kind](key) if (kind, key) in present else None
+
+    upper: dict = {}  # (i, j): list of product terms
+    force: dict = {i: ([nm("f", i)] if nm("f", i) else []) for i in range(n)}
+    by_row: dict = {}
+    for kind, key, _ in printed:
+        if kind == "J":
+            by_row.setdefault(key[0], []).append(key[1])
+    for r, cols in by_row.items():
+        w, g = nm("w", r), nm("g", r)
+        if w is None:
+            continue
+        cols = sorted(cols)
+        if g is not None:
+            body.append(f"wg{r} = {w}*{g}")
+        for a, i in enumerate(cols):
+            for j in cols[a:]:
+                upper.setdefault((i, j), []).append(f"{w}*j{r}_{i}*j{r}_{j}")
+            if g is not None:
+                force[i].append(f"-j{r}_{i}*wg{r}")
+    qd = [f"y{n + j}" for j in range(n)]
+    for k in range(len(s.rotors)):
+        Wn = {(i, j): nm("W", (k, i, j)) for i in range(3) for j in range(n)}
+        In = {(i, j): nm("I", (k, i, j)) for i in range(3) for j in range(3)}
+        for i in range(3):
+            terms = [f"{Wn[i, j]}*{qd[j]}" for j in range(n) if Wn[i, j]] + ([nm("om", (k, i))] if nm("om", (k, i))
+                                                                              else [])
+            body.append(f"o{k}_{i} = {' + '.join(terms) if terms else '0.0'}")
+        for i in range(3):
+            terms = [f"{In[i, j]}*o{k}_{j}" for j in range(3) if In[i, j]]
+            body.append(f"io{k}_{i} = {' + '.join(terms) if terms else '0.0'}")
+            terms = [f"{In[i, j]}*{nm('al', (k, j))}" for j in range(3) if In[i, j] and nm("al", (k, j))]
+            body.append(f"ia{k}_{i} = {' + '.join(terms) if terms else '0.0'}")
+        cyc = ((1, 2), (2, 0), (0, 1))
+        for i, (a, b) in enumerate(cyc):
+            body.append(f"hh{k}_{i} = ia{k}_{i} + o{k}_{a}*io{k}_{b} - o{k}_{b}*io{k}_{a}")
+        cols = sorted({j for (i, j), v in Wn.items() if v})
+        for j in cols:
+            for i in range(3):
+                terms = [f"{In[i, a]}*{Wn[a, j]}" for a in range(3) if In[i, a] and Wn[a, j]]
+                if terms:
+                    body.append(f"iw{k}_{i}_{j} = {' + '.join(terms)}")
+        have = {(i, j) for j in cols for i in range(3)
+                if any(In[i, a] and Wn[a, j] for a in range(3))}
+        for a_, i in enumerate(cols):
+            for j in cols[a_:]:
+                terms = [f"{Wn[b, i]}*iw{k}_{b}_{j}" for b in range(3) if Wn[b, i] and (b, j) in have]
+                if terms:
+                    upper.setdefault((i, j), []).extend(terms)
+            force[i] += [f"-{Wn[b, i]}*hh{k}_{b}" for b in range(3) if Wn[b, i]]
+    Aset = {(key[0], key[1]) for kind, key, _ in printed if kind == "A"}
+    for r in range(m):  # the augmented form of codegen/cse.py: (M + AᵀA) q̈ = f + Aᵀc + Bλ
+        cols = sorted(j for (rr, j) in Aset if rr == r)
+        for a_, i in enumerate(cols):
+            for j in cols[a_:]:
+                upper.setdefault((i, j), []).append(f"k{r}_{i}*k{r}_{j}")
+            if nm("c", r):
+                force[i].append(f"k{r}_{i}*e{r}")
+    for (i, j), terms in sorted(upper.items()):
+        body.append(f"a{i}_{j} = {' + '.join(terms)}")
+    for i in range(n):
+        body.append(f"b{i} = {' + '.join(force[i]) if force[i] else '0.0'}".replace("+ -", "- "))
+    if m:
+        body += [f"e{r} = 0.0" for r in range(m) if not nm("c", r)]
+        B = None
+        if eqs.is_rough:
+            B = {(key[0], key[1]): True for kind, key, _ in printed if kind == "B"}
+        lines, xs, lam = _constrained_lines(n, m, upper, {rj: True for rj in Aset}, B)
+        body += lines
+        outs = qd + xs + lam
+    else:
+        lines, nz, d = _ldl_factor(n, lambda i, j: f"a{i}_{j}" if (i, j) in upper else None, "", "mass matrix")
+        body += lines
+        xs = [f"x{i}" for i in range(n)]
+        body += _ldl_solve(n, nz, d, [f"b{i}" for i in range(n)], xs, "")
+        outs = qd + xs
+    body.append(f"return [{', '.join(outs)}]")
+    return f"def {name}(t, y, p):\n" + "\n".join("    " + line for line in body) + "\n"
 
 
 def structural_module_source(eqs: StructuralEquations, backend: str, n_params: int, constraint_rhs) -> str:
