@@ -43,7 +43,7 @@ from ..model.inputs import is_input
 from ..model.rigid_body import RigidBody
 from ..model.rotations import Quaternion
 from .equations import Equations
-from .lagrange import gradient
+from .lagrange import _tidy_force, gradient
 from .multipliers import constraint_blocks
 
 __all__ = ["PointMass", "Rotor", "Structure", "StructuralEquations", "structural_equations",
@@ -287,8 +287,10 @@ def structural_equations(system) -> StructuralEquations:
     structure = Structure(tuple(points), tuple(rotors), Q, T, T2, T0)
 
     blocks = constraint_blocks(system.constraints, coords, q, qd) if system.constraints else {}
-    L = T - V
-    jacobi_rate = -sp.diff(L, t) + sp.Add(*(v * Qn for v, Qn in zip(qd, nonconservative)))
+    # ∂T/∂t of the compact T: the bounded Pythagorean tidy-up of the expanded derivation, so that a T whose
+    # explicit t cancels (a uniformly rotating frame) gives 0 here too where it fits
+    dT_dt = _tidy_force(sp.diff(T, t)) if t in T.free_symbols else sp.S.Zero
+    jacobi_rate = -dT_dt + sp.diff(V, t) + sp.Add(*(v * Qn for v, Qn in zip(qd, nonconservative)))
     if blocks:
         B, lam = blocks["reaction_matrix"], blocks["multipliers"]
         jacobi_rate += sum((lam[k] * B[j, k] * qd[j] for k in range(B.cols) for j in range(n)), sp.S.Zero)
@@ -412,7 +414,7 @@ class StructuralEquations(Equations):
         points = tuple((p.mass, p.jacobian, p.velocity_bias, p.acceleration_bias) for p in s.points)
         rotors = tuple((r.inertia, r.jacobian, r.omega_bias, r.acceleration_bias) for r in s.rotors)
         return tuple((f.name, getattr(self, f.name)) for f in fields(Equations) if f.name not in LAZY_FIELDS) + (
-            ("structure", (points, rotors, s.generalized_force, s.kinetic)),)
+            ("structure", (points, rotors, s.generalized_force)),)  # T follows from these: not printed again
 
     def __hash__(self) -> int:
         h = self.__dict__.get("_hash")
