@@ -250,9 +250,14 @@ class System:
                 if spec.velocity.has(sp.Integral):
                     problems.append(f"constraint {spec.name} contains an integral: give it in closed form")
                 self._check_expr(spec.name, spec.velocity, coords, presc, 1, problems, parameters)
-        if structural:  # each body's kinematics instead of the whole T
-            for b in kinematic_bodies:
-                _check_kinematics(self, b, coords, presc, problems, parameters)
+        if structural:  # each body's kinematics instead of the whole T: all at once, then per body if wrong
+            found: list[str] = []
+            everything = sp.Tuple(*(e for b in kinematic_bodies for e in _kinematics_of(b)))
+            _check_kinematics(self, "kinematics of the bodies", everything, coords, presc, found, parameters)
+            if found:
+                for b in kinematic_bodies:
+                    _check_kinematics(self, f"kinematics of {b.name or b!r}", sp.Tuple(*_kinematics_of(b)), coords,
+                                      presc, problems, parameters)
         else:
             self._check_expr("T", T_total, coords, presc, 1, problems, parameters)
         _check_inputs(T_total if not structural else sp.Tuple(*(e for b in kinematic_bodies
@@ -606,18 +611,15 @@ def _kinematics_of(b) -> list:
     return [sp.sympify(e) for e in _kinematic_expressions(b)]
 
 
-def _check_kinematics(system, b, coords, presc, problems, declared) -> None:
-    """The checks of T, on one body's kinematics (mass, positions, inertia, orientation): no velocities, no
+def _check_kinematics(system, label: str, exprs: sp.Tuple, coords, presc, problems, declared) -> None:
+    """The checks of T, on bodies' kinematics (masses, positions, inertias, orientations): no velocities, no
     unknown functions or symbols."""
-    label = f"kinematics of {b.name or b!r}"
-    exprs = _kinematics_of(b)
-    for e in exprs:
-        d = e.atoms(sp.Derivative)
-        if d:
-            problems.append(f"{label} contain the velocity {sorted(d, key=str)[0]}: positions, orientations, masses "
-                            "and inertias depend on the coordinates and t only")
-            return
-    system._check_expr(label, sp.Tuple(*exprs), coords, presc, 1, problems, declared)
+    d = exprs.atoms(sp.Derivative)
+    if d:
+        problems.append(f"{label} contain the velocity {sorted(d, key=str)[0]}: positions, orientations, masses "
+                        "and inertias depend on the coordinates and t only")
+        return
+    system._check_expr(label, exprs, coords, presc, 1, problems, declared)
 
 
 def _check_inputs(T, V, specs, presc, P, D, F, coords, problems) -> None:
