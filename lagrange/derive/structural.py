@@ -81,15 +81,21 @@ class Rotor:
 @dataclass(frozen=True)
 class Structure:
     """What generated code needs to assemble ``M q̈ = f``: the point masses, the rotors and
-    ``generalized_force`` ``Q`` (n expressions); ``kinetic`` is T in the compact per-body form (not expanded),
-    ``quadratic`` and ``velocity_free`` its parts ``T₂`` and ``T₀`` (for energy reports)."""
+    ``generalized_force`` ``Q`` (n expressions). T in the compact per-body form (not expanded) follows from them
+    (:meth:`kinetic_parts`)."""
 
     points: tuple
     rotors: tuple
     generalized_force: tuple
-    kinetic: sp.Expr
-    quadratic: sp.Expr
-    velocity_free: sp.Expr
+
+    def kinetic_parts(self, qd) -> tuple:
+        """``(T, T₂, T₀)`` in the compact per-body form: ``T = Σ ½ m |J q̇ + ∂x/∂t|² + Σ ½ ωᵀIω``, ``T₂`` its part
+        quadratic in the velocities, ``T₀`` its part free of them."""
+        return _kinetic_parts(self.points, self.rotors, qd)
+
+    def has_time(self) -> bool:
+        """Whether t appears explicitly in the kinematics (a moving frame, a prescribed motion)."""
+        return any(t in e.free_symbols for e in self.expressions()[len(self.generalized_force):])
 
     def expressions(self) -> list:
         """Every expression of the structure (for free symbols and explicit time)."""
@@ -283,12 +289,12 @@ def structural_equations(system) -> StructuralEquations:
     dissipative = [POWER_FUNCTION_SIGN * dP[i] + RAYLEIGH_SIGN * dD[i] for i in range(n)]
     nonconservative = tuple(F[i] + dissipative[i] for i in range(n))
     Q = tuple(nonconservative[i] - dV[i] for i in range(n))
-    T, T2, T0 = _kinetic_parts(points, rotors, qd)
-    structure = Structure(tuple(points), tuple(rotors), Q, T, T2, T0)
+    structure = Structure(tuple(points), tuple(rotors), Q)
 
     blocks = constraint_blocks(system.constraints, coords, q, qd) if system.constraints else {}
     # ∂T/∂t of the compact T: the bounded Pythagorean tidy-up of the expanded derivation, so that a T whose
     # explicit t cancels (a uniformly rotating frame) gives 0 here too where it fits
+    T = structure.kinetic_parts(qd)[0] if structure.has_time() else sp.S.Zero  # else ∂T/∂t = 0: T not formed
     dT_dt = _tidy_force(sp.diff(T, t)) if t in T.free_symbols else sp.S.Zero
     jacobi_rate = -dT_dt + sp.diff(V, t) + sp.Add(*(v * Qn for v, Qn in zip(qd, nonconservative)))
     if blocks:
@@ -398,8 +404,7 @@ class StructuralEquations(Equations):
             return sp.sympify(e).xreplace(mapping)
 
         s = self.structure
-        structure = Structure(s.points, s.rotors, tuple(sub(e) for e in s.generalized_force), s.kinetic,
-                              s.quadratic, s.velocity_free)
+        structure = Structure(s.points, s.rotors, tuple(sub(e) for e in s.generalized_force))
         cheap = {f.name: getattr(self, f.name) for f in fields(Equations) if f.name not in LAZY_FIELDS}
         cheap.update(applied=tuple(sub(e) for e in self.applied), dissipative=tuple(sub(e) for e in self.dissipative),
                      nonconservative=tuple(sub(e) for e in self.nonconservative), jacobi_rate=sub(self.jacobi_rate),
@@ -431,7 +436,7 @@ class StructuralEquations(Equations):
         return self._identity() == other._identity()
 
     def __getstate__(self) -> dict:
-        skip = {"_hash", "_expanded", *LAZY_FIELDS}
+        skip = {"_hash", "_expanded", "_energy_parts", *LAZY_FIELDS}
         return {k: v for k, v in self.__dict__.items() if k not in skip}
 
     def __setstate__(self, state: dict) -> None:
@@ -449,5 +454,9 @@ class StructuralEquations(Equations):
 
     def energy_parts(self) -> tuple:
         """``(T, h, T₂, T₀)`` from the structure: T in the compact per-body form, ``h = T₂ − T₀ + V``."""
-        s = self.structure
-        return s.kinetic, s.quadratic - s.velocity_free + self.potential, s.quadratic, s.velocity_free
+        parts = self.__dict__.get("_energy_parts")
+        if parts is None:
+            T, T2, T0 = self.structure.kinetic_parts(self.qd)
+            parts = (T, T2 - T0 + self.potential, T2, T0)
+            object.__setattr__(self, "_energy_parts", parts)
+        return parts
