@@ -299,6 +299,11 @@ def test_refusals_and_auto_rule():
     with pytest.raises(DeclarationError, match="Quaternion"):
         System(list(qs), bodies=[quat], derivation="structural")
     assert System(list(qs), bodies=[quat]).derivation == "expanded"  # auto never takes what it cannot do
+    with pytest.raises(DeclarationError, match="changes with the coordinates or t"):
+        System([x], bodies=[Particle(m * (1 + t), (x,))], derivation="structural")
+    a = coordinates("a")
+    with pytest.raises(DeclarationError, match="changes with the coordinates or t"):
+        System([a], bodies=[RigidBody(m, (1, 1, 1), orientation=rot_z(a), com=(a, 0, 0))], derivation="structural")
     assert n_link_pendulum(5).derivation == "expanded" and n_link_pendulum(6).derivation == "structural"
     assert System([x], bodies=[Particle(m, (x,))], derivation="structural").derivation == "structural"
     with pytest.raises(DeclarationError, match="velocity"):

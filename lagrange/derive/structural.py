@@ -34,6 +34,7 @@ from __future__ import annotations
 from dataclasses import dataclass, fields, replace
 
 import sympy as sp
+from sympy.core.function import AppliedUndef
 
 from ..conventions import POWER_FUNCTION_SIGN, RAYLEIGH_SIGN, t
 from ..errors import DeclarationError
@@ -123,6 +124,10 @@ def structural_refusal(T_given, bodies) -> str | None:
         for e in _kinematic_expressions(b):
             if sp.sympify(e).has(sp.Integral):
                 return f"body {b.name or b!r} has an integral in its kinematics"
+        constant = [b.mass] + ([*b.inertia, *b.com] if isinstance(b, RigidBody) else [])
+        if any(sp.sympify(e).has(t) or sp.sympify(e).atoms(AppliedUndef) for e in constant):
+            return (f"the mass, inertia or centre of mass of body {b.name or b!r} changes with the coordinates or t "
+                    "(the structural form assumes them constant: m a and Euler's equations)")
     return None
 
 
