@@ -2,12 +2,14 @@
 KanesMethod on the same model, declare / derive / compile broken out (issue #23, item 1).
 
 Each cell runs in a fresh process (sympy's caches cold; imports — sympy, numpy, lagrange, symengine — and
-sympy's deferred imports done first and **not** timed); the two tools alternate (lagrange, Kane, lagrange,
-Kane, …) so both see the same machine load; CPU time (``time.process_time``) and wall time are reported, median
+sympy's deferred imports done first and **not** timed); the three routes alternate (structural, expanded, Kane,
+…) so all see the same machine load; CPU time (``time.process_time``) and wall time are reported, median
 over the repetitions.
 
-* **lagrange**: *declare* builds the :class:`lagrange.System` (bodies, constraints, validation, the Frobenius
-  test of each non-holonomic constraint); *derive* is ``system.derived`` (``lagrange_equations``, the on-disk
+* **lagrange (structural)** and **lagrange (expanded)**: ``System(..., derivation=...)``; *declare* builds the
+  :class:`lagrange.System` (bodies, constraints, validation, the Frobenius test of each non-holonomic
+  constraint; the expanded route also builds the whole T); *derive* is ``system.derived`` (structural: each
+  body's kinematics J, a, W, α, :mod:`lagrange.derive.structural`; expanded: ``lagrange_equations``, the on-disk
   derivation cache off); *compile* is ``system.compile(params)`` (default Python backend: CSE, generated
   source, ``exec``; the equations derived once, in *derive*).
 * **KanesMethod**: *declare* builds frames, points, bodies, loads and the ``KanesMethod`` object; *derive* is
@@ -55,7 +57,7 @@ def mark():
 
 _LAGRANGE_BICYCLE = r"""
 from lagrange_problems import bench_bicycle as bb
-mark(); system = bb.whipple_bicycle()
+mark(); system = bb.whipple_bicycle(derivation=DERIVATION)
 mark(); eqs = system.derived
 mark(); model = system.compile(bb.PARAMS)
 mark()
@@ -72,7 +74,7 @@ centre = sp.Matrix([x, y, 0]) + r * lean * sp.Matrix([0, 0, 1])
 disc = RigidBody(m, (m * r**2 / 4, m * r**2 / 2, m * r**2 / 4), origin=centre, orientation=orientation)
 omega = orientation.space_angular_velocity()
 v_contact = centre.diff(t) + omega.cross(-r * lean * sp.Matrix([0, 0, 1]))
-system = System([x, y, q1, q2, q3], bodies=[disc], V=m * g * centre[2],
+system = System([x, y, q1, q2, q3], bodies=[disc], V=m * g * centre[2], derivation=DERIVATION,
                 constraints=[Nonholonomic(v_contact[0], "roll x"), Nonholonomic(v_contact[1], "roll y")])
 mark(); eqs = system.derived
 mark(); model = system.compile({m: 2.0, g: 9.81, r: 0.4})
@@ -127,9 +129,15 @@ print(json.dumps({"cpu": cpu, "wall": wall}))
 """
 
 
+#: the tools compared: lagrange's two derivations (``System(derivation=...)``) and sympy's KanesMethod
+TOOLS = ("structural", "expanded", "kane")
+
+
 def run(tool: str, model: str) -> dict:
-    body = {("lagrange", "bicycle"): _LAGRANGE_BICYCLE, ("lagrange", "disc"): _LAGRANGE_DISC,
-            ("kane", "disc"): _KANE_DISC}.get((tool, model)) or _kane_bicycle_source()
+    if tool == "kane":
+        body = _KANE_DISC if model == "disc" else _kane_bicycle_source()
+    else:
+        body = f"DERIVATION = {tool!r}\n" + (_LAGRANGE_BICYCLE if model == "bicycle" else _LAGRANGE_DISC)
     env = dict(os.environ)
     r = subprocess.run([sys.executable, "-c", _PRELUDE + body + _EPILOGUE], capture_output=True, text=True,
                        timeout=900, env=env)
@@ -149,10 +157,10 @@ def main() -> None:
     args = ap.parse_args()
     models = ["disc"] if args.quick else ["bicycle", "disc"]
     reps = 1 if args.quick else args.reps
-    cells: dict = {(tool, mdl): [] for mdl in models for tool in ("lagrange", "kane")}
+    cells: dict = {(tool, mdl): [] for mdl in models for tool in TOOLS}
     for _ in range(reps):
         for mdl in models:
-            for tool in ("lagrange", "kane"):  # interleaved: A, B, A, B, …
+            for tool in TOOLS:  # interleaved: A, B, C, A, B, C, …
                 out = run(tool, mdl)
                 cells[tool, mdl].append(out)
                 print(tool, mdl, " ".join(f"{c:.2f}" for c in out["cpu"]), flush=True)
@@ -174,13 +182,13 @@ def main() -> None:
              "| Kane / lagrange (CPU) |",
              "|---|---|---|---|---|---|---|---|"]
     for mdl in models:
-        for tool in ("lagrange", "kane"):
+        for tool in TOOLS:
             ph = [med(tool, mdl, "cpu", k) for k in range(3)]
             tot, wall = med(tool, mdl, "cpu"), med(tool, mdl, "wall")
-            ratio = med("kane", mdl, "cpu") / med("lagrange", mdl, "cpu")
-            label = "sympy KanesMethod" if tool == "kane" else "lagrange"
+            ratio = med("kane", mdl, "cpu") / med(tool, mdl, "cpu")
+            label = "sympy KanesMethod" if tool == "kane" else f"lagrange ({tool})"
             lines.append(f"| {mdl} | {label} | {ph[0]:.2f} s | {ph[1]:.2f} s | {ph[2]:.2f} s | {tot:.2f} s "
-                         f"| {wall:.2f} s | {f'×{ratio:.2f}' if tool == 'lagrange' else ''} |")
+                         f"| {wall:.2f} s | {f'×{ratio:.2f}' if tool != 'kane' else ''} |")
     text = "\n".join(lines) + "\n"
     print(text)
     if not args.quick:

@@ -4,8 +4,10 @@ Each measurement runs in a fresh process (imports not counted: they happen befor
 is counted, caches off: ``LAGRANGE_DERIVATION_CACHE=0``), routes interleaved per N (A, B, C, A, B, C for
 ``--repeats`` > 1), CPU time (``time.process_time`` in the child) and wall time:
 
-* ``lagrange``: ``n_link_pendulum(N)`` (declare), ``.derived`` (derive), ``.compile(backend="python")``
-  (CSE + printing);
+* ``lagrange (structural)`` / ``lagrange (expanded)``: ``n_link_pendulum(N, derivation=...)`` (declare),
+  ``.derived`` (derive), ``.compile(backend="python")`` (CSE + printing). Structural: the kinematics of each
+  bob differentiated, M and f assembled by the generated code (:mod:`lagrange.derive.structural`; the default,
+  ``derivation="auto"``, from 6 coordinates on); expanded: T expanded and differentiated twice;
 * ``lagrange (before)``: the same with the tree given by ``--before DIR`` (a checkout of the previous
   commit), for the before/after table;
 * ``sympy``: ``LagrangesMethod`` + ``msubs`` (derive) and ``lambdify(cse=True)`` (codegen);
@@ -35,6 +37,7 @@ _CHILD = r"""
 import json, os, sys, time
 os.environ["LAGRANGE_DERIVATION_CACHE"] = "0"
 route, n = sys.argv[1], int(sys.argv[2])
+ROUTES_WITH_DERIVATION = ("lagrange (structural)", "lagrange (expanded)")
 import sympy
 import lagrange
 from lagrange.examples import n_link_pendulum
@@ -46,7 +49,8 @@ out = {}
 def clock():
     return time.process_time(), time.perf_counter()
 if route.startswith("lagrange"):
-    c0 = clock(); s = n_link_pendulum(n); c1 = clock(); s.derived; c2 = clock()
+    kw = {"derivation": route.split("(")[1].rstrip(")")} if route in ROUTES_WITH_DERIVATION else {}
+    c0 = clock(); s = n_link_pendulum(n, **kw); c1 = clock(); s.derived; c2 = clock()
     s.compile({"g": 9.81}, backend="python"); c3 = clock()
     stages = [("declare", c0, c1), ("derive", c1, c2), ("codegen", c2, c3)]
 elif route == "sympy":
@@ -90,10 +94,12 @@ def main() -> None:
     ap.add_argument("--before", default=None, help="a tree (with .pp/) of the previous version")
     ap.add_argument("--repeats", type=int, default=1)
     ap.add_argument("--timeout", type=float, default=300.0)
+    ap.add_argument("--sympy-max", type=int, default=20, help="largest N for the sympy route")
     ap.add_argument("--out", default=str(RESULTS / "nlink_setup.md"))
     args = ap.parse_args()
     links = [10, 20] if args.quick else [int(v) for v in args.links.split(",")]
-    routes = ["lagrange"] + (["lagrange (before)"] if args.before else []) + ["sympy"]
+    routes = ["lagrange (structural)", "lagrange (expanded)"] + (["lagrange (before)"] if args.before else [])
+    routes.append("sympy")
     try:
         import heyoka  # noqa: F401
 
@@ -105,7 +111,7 @@ def main() -> None:
         samples: dict = {r: [] for r in routes}
         for _ in range(args.repeats):
             for r in routes:  # interleaved
-                if r == "sympy" and args.quick and n > 10:
+                if r == "sympy" and (n > args.sympy_max or (args.quick and n > 10)):
                     continue
                 samples[r].append(run_child(r, n, args.timeout, args.before))
         for r in routes:

@@ -76,13 +76,14 @@ SYMBOLS = {name: parameters(name) for name in BENCHMARK}
 SYMBOLS.update({name: parameters(name, real=True) for name in ("z_B", "z_H", "I_Bxz", "I_Hxz")})
 
 
-def whipple_bicycle(values=None) -> System:
+def whipple_bicycle(values=None, *, derivation: str = "auto") -> System:
     """The Whipple bicycle; ``values`` maps parameter names to numbers or expressions substituted into the
     declaration (default: every parameter a symbol, see :data:`SYMBOLS`; bind them with :data:`PARAMS`).
 
     Generalized forces: ``T_phi`` on the roll coordinate (a torque about the yaw frame's x axis from the ground
     on the rear frame) and ``T_delta`` on the steer coordinate (equal and opposite torques on front and rear
-    frame about the steer axis) — the inputs of the paper's linear equations (5.3).
+    frame about the steer axis) — the inputs of the paper's linear equations (5.3). ``derivation`` is passed to
+    :class:`lagrange.System`.
     """
     p = {**SYMBOLS, **{k: sp.sympify(val) for k, val in (values or {}).items()}}
     V3 = sp.Matrix
@@ -155,7 +156,8 @@ def whipple_bicycle(values=None) -> System:
     masses = {"R": p["m_R"], "B": p["m_B"], "H": p["m_H"], "F": p["m_F"]}
     V = -g * sum(masses[k] * rho[k][2] for k in masses)  # z points down
     return System(list(COORDINATES), bodies=bodies, V=V, forces={phi: T_phi, delta: T_delta},
-                  constraints=constraints, name="Whipple bicycle (Meijaard et al. 2007 benchmark)")
+                  constraints=constraints, name="Whipple bicycle (Meijaard et al. 2007 benchmark)",
+                  derivation=derivation)
 
 
 def operating_point(speed=v, values=None) -> dict:

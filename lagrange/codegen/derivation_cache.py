@@ -79,6 +79,8 @@ UNKEYED_ATTRIBUTES = {
     "bodies": "their kinetic energy is in T and their constraints in constraints",
     "T_given": "part of T",
     "description": "text only",
+    "derivation": "only expanded derivations are cached (structural ones are derived directly, in a fraction of it)",
+    "_kinematic_bodies": "the bodies with prescribed motion substituted: in T",
 }
 
 
@@ -239,7 +241,8 @@ def equations_fingerprint(eqs: Equations) -> str | None:
     known = _FINGERPRINTS.get(id(eqs))
     if known is not None and known[0]() is eqs:
         return known[1]
-    text = _text(tuple((f.name, getattr(eqs, f.name)) for f in fields(eqs)))
+    identity = getattr(eqs, "_identity", None)  # structural equations: without deriving their expanded fields
+    text = _text(identity() if identity else tuple((f.name, getattr(eqs, f.name)) for f in fields(eqs)))
     return _remember(eqs, None if text is None else _digest("equations", text))
 
 

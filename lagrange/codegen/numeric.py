@@ -243,7 +243,9 @@ class NumericModel:
 
     @property
     def _has_column_kernel(self) -> bool:
-        return self.backend == "numba" and self.schedule is None and not self.equations.m
+        # structural equations have no straight-line M and f to vectorize: their compiled rhs per member
+        return (self.backend == "numba" and self.schedule is None and not self.equations.m
+                and not self.equations.is_structural)
 
     def _run_columns(self, tt, Yc, Pc):
         """The vectorized kernel's result, shape (2n, k), or None when a member's mass matrix failed the
@@ -603,10 +605,8 @@ def _reference_functions(eqs: Equations):
 def _aux_function(eqs: Equations):
     ren = rename_map(eqs)
     tt, ys, ps = numeric_arguments(eqs)
-    T0 = eqs.kinetic.subs({v: 0 for v in eqs.qd})
-    qd = sp.Matrix(eqs.qd)
-    T2 = (qd.T * eqs.mass_matrix * qd)[0, 0] / 2
-    exprs = [e.xreplace(ren) for e in (eqs.kinetic, eqs.potential, eqs.jacobi, eqs.jacobi_rate, T2, T0)]
+    T, h, T2, T0 = eqs.energy_parts()
+    exprs = [sp.sympify(e).xreplace(ren) for e in (T, eqs.potential, h, eqs.jacobi_rate, T2, T0)]
     f = sp.lambdify((tt, ys, ps, list(eqs.multipliers)), exprs, modules="numpy", cse=True)
 
     def aux(t_, cols, p, lam):
@@ -672,7 +672,7 @@ class _Lazy:
 
 
 def _python_rhs(source: str) -> Callable:
-    namespace: dict = {"math": math}
+    namespace: dict = {"math": math, "np": np}
     exec(compile(source, "<lagrange rhs>", "exec"), namespace)  # noqa: S102 - our own generated code
     return namespace["rhs"]
 
@@ -807,7 +807,12 @@ def compile_equations(eqs: Equations, params: Mapping, *, backend: str = "python
 
 
 def _generate_source(eqs: Equations, backend: str, n_params: int, constraint_rhs) -> str:
-    """The generated source of the ``python`` or ``numba`` backend: one CSE over M and f, then printing."""
+    """The generated source of the ``python`` or ``numba`` backend: one CSE over M and f, then printing
+    (structural equations: one CSE over their kinematics, :mod:`lagrange.codegen.structural_source`)."""
+    if eqs.is_structural:
+        from .structural_source import structural_module_source
+
+        return structural_module_source(eqs, backend, n_params, constraint_rhs)
     fused, _ = fuse(eqs, constraint_rhs=constraint_rhs, printable=True)
     if backend == "python":
         return rhs_source(fused, n_params=n_params, flavour="python")

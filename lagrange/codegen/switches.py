@@ -27,13 +27,17 @@ def switching_functions(eqs: Equations) -> list:
     Equations (a tree walk of the forcing costs about 0.1 ms, which repeated short runs would pay each time)."""
     if eqs not in _SWITCHES:
         atoms = set()
-        for e in eqs.forcing:
+        # structural equations: the switches are in Q (the kinematics hold none), read without expanding M, f
+        for e in (eqs.structure.generalized_force if eqs.is_structural else eqs.forcing):
             atoms |= {a.args[0] for a in e.atoms(sp.sign)}
         _SWITCHES[eqs] = tuple(sorted(atoms, key=sp.default_sort_key))
     return list(_SWITCHES[eqs])
 
 
 def _replace_in(eqs: Equations, mapping: dict, new_params: tuple = ()) -> Equations:
+    if eqs.is_structural:  # the same replacement in Q and the force fields, structure kept
+        return eqs.with_replaced_forces(mapping, tuple(new_params))
+
     def sub(e):
         return e.xreplace(mapping)
 
@@ -52,7 +56,8 @@ def regularized_equations(eqs: Equations, epsilon: float) -> Equations:
     """``sign(u) → u/sqrt(u² + ε²)`` everywhere in the forces."""
     eps = sp.Float(epsilon)
     mapping = {}
-    for e in list(eqs.forcing) + list(eqs.nonconservative) + [eqs.jacobi_rate]:
+    forcing = eqs.structure.generalized_force if eqs.is_structural else eqs.forcing
+    for e in list(forcing) + list(eqs.nonconservative) + [eqs.jacobi_rate]:
         for a in e.atoms(sp.sign):
             u = a.args[0]
             mapping[a] = u / sp.sqrt(u**2 + eps**2)

@@ -92,6 +92,19 @@ class Equations:
         return {k: v for k, v in self.__dict__.items() if k != "_hash"}
 
     @property
+    def is_structural(self) -> bool:
+        """True for :class:`~lagrange.derive.structural.StructuralEquations` (code generation assembles M and f
+        from the system's structure)."""
+        return False
+
+    def energy_parts(self) -> tuple:
+        """``(T, h, T₂, T₀)``: the kinetic energy, the Jacobi integral, and T's parts quadratic in and free of
+        the velocities (``T₂ = ½ q̇ᵀ M q̇``, ``T₀ = T|_{q̇=0}``), for energy reports."""
+        qd = sp.Matrix(self.qd)
+        T2 = (qd.T * self.mass_matrix * qd)[0, 0] / 2
+        return self.kinetic, self.jacobi, T2, self.kinetic.subs({v: 0 for v in self.qd})
+
+    @property
     def n(self) -> int:
         """Number of degrees of freedom."""
         return len(self.q)

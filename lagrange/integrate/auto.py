@@ -233,7 +233,7 @@ def _first(preferred: tuple[str, ...], allowed: tuple[str, ...]) -> str:
 
 def _taylor_info(eqs, allowed: tuple[str, ...], ctx: _Context) -> tuple[int, str, int] | None:
     """``(order, interpreter, tape size)`` when the Taylor method may run this request, else None."""
-    if "taylor" not in allowed:
+    if "taylor" not in allowed or eqs.is_structural:  # the tape needs the expanded equations: set-up O(n³)
         return None
     from ..codegen.numeric import NumericModel
     from .taylor import available_interpreter, taylor_order

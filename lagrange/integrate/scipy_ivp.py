@@ -96,8 +96,8 @@ def state_function(model: NumericModel, *, with_work: bool):
 
 def _jacobian(model: NumericModel, method: str, conservative: bool):
     """The generated Jacobian for implicit methods (unconstrained systems; scipy's finite differences
-    otherwise)."""
-    if method not in IMPLICIT_METHODS or model.m or model.schedule is not None:
+    otherwise, and for structural equations, whose generated Jacobian would need their expanded M and f)."""
+    if method not in IMPLICIT_METHODS or model.m or model.schedule is not None or model.equations.is_structural:
         return None  # (a feedback input's ∂u/∂y is not in the generated Jacobian: scipy's differences)
     jy = model.jacobian
     if conservative:

@@ -97,6 +97,15 @@ class System:
         differential form :class:`~lagrange.Differential`). All coordinates are kept and multipliers
         λ are added (Wells ch. 12); see :mod:`lagrange.model.constraints` for the sign convention and
         :func:`lagrange.eliminate` to remove superfluous coordinates instead.
+    derivation : {"auto", "expanded", "structural"}, optional
+        How the equations are derived. ``"expanded"``: from the expanded T, differentiated twice
+        (:func:`lagrange.derive.lagrange.lagrange_equations`). ``"structural"``: from each body's kinematics,
+        M and f assembled numerically by the generated code (:mod:`lagrange.derive.structural`; same equations,
+        set-up linear in the size of the kinematics) — only when the kinetic energy comes wholly from
+        Particle and RigidBody bodies (no ``T``, no Quaternion orientation), else DeclarationError naming why.
+        ``"auto"`` (default): structural where it applies and pays (at least 6 coordinates;
+        :func:`lagrange.derive.structural.auto_structural`), else expanded. With structural, :attr:`T` is built
+        on first access only.
 
     Attributes
     ----------
@@ -142,7 +151,12 @@ class System:
         prescribed: Mapping | None = None,
         constraints: Sequence = (),
         description: str = "",
+        derivation: str = "auto",
     ):
+        from ..derive.structural import DERIVATIONS, auto_structural, structural_refusal
+
+        if derivation not in DERIVATIONS:
+            raise DeclarationError(f"derivation={derivation!r} is not one of {', '.join(map(repr, DERIVATIONS))}")
         problems: list[str] = []
         # sympy.physics.mechanics dynamicsymbols (functions of Symbol('t')) are accepted: their time becomes t
         coordinates, T, V, P, rayleigh, forces, prescribed, constraints = (
@@ -203,9 +217,17 @@ class System:
         if T is None and not bodies:
             problems.append("no kinetic energy: give T or bodies (e.g. Particle(m, (x, y)))")
         T_given = prep(0 if T is None else T, "T")
-        T_total = T_given
-        for b in bodies:
-            T_total += prep(b.kinetic_energy(), f"kinetic energy of {b!r}")
+        refusal = structural_refusal(T_given, bodies)
+        if derivation == "structural" and refusal is not None:
+            problems.append(f"derivation='structural' is not available: {refusal}; use derivation='expanded'")
+        structural = refusal is None and (derivation == "structural"
+                                          or (derivation == "auto" and auto_structural(len(coords), bodies)))
+        kinematic_bodies = tuple(b.subs(presc) for b in bodies) if presc and structural else bodies
+        T_total = None
+        if not structural:  # the structural path never builds the whole T (built on first access of .T)
+            T_total = T_given
+            for b in bodies:
+                T_total += prep(b.kinetic_energy(), f"kinetic energy of {b!r}")
 
         V_e = prep(V, "V")
         P_e = prep(P, "P")
@@ -228,8 +250,19 @@ class System:
                 if spec.velocity.has(sp.Integral):
                     problems.append(f"constraint {spec.name} contains an integral: give it in closed form")
                 self._check_expr(spec.name, spec.velocity, coords, presc, 1, problems, parameters)
-        _check_inputs(T_total, V_e, specs, presc, P_e, D_e, F, coords, problems)
-        self._check_expr("T", T_total, coords, presc, 1, problems, parameters)
+        if structural:  # each body's kinematics instead of the whole T: all at once, then per body if wrong
+            found: list[str] = []
+            everything = sp.Tuple(*(e for b in kinematic_bodies for e in _kinematics_of(b)))
+            _check_kinematics(self, "kinematics of the bodies", everything, coords, presc, found, parameters)
+            if found:
+                for b in kinematic_bodies:
+                    _check_kinematics(self, f"kinematics of {b.name or b!r}", sp.Tuple(*_kinematics_of(b)), coords,
+                                      presc, problems, parameters)
+        else:
+            self._check_expr("T", T_total, coords, presc, 1, problems, parameters)
+        _check_inputs(T_total if not structural else sp.Tuple(*(e for b in kinematic_bodies
+                                                                 for e in _kinematics_of(b))),
+                      V_e, specs, presc, P_e, D_e, F, coords, problems)
         self._check_expr("V", V_e, coords, presc, 0, problems, parameters)
         self._check_expr("P", P_e, coords, presc, 1, problems, parameters)
         self._check_expr("rayleigh", D_e, coords, presc, 1, problems, parameters)
@@ -239,7 +272,10 @@ class System:
             raise DeclarationError(problems, subject=f"system {name!r}" if name else "system")
 
         self.coordinates: tuple = coords
-        self.T: sp.Expr = T_total
+        if T_total is not None:
+            self.T: sp.Expr = T_total
+        self.derivation: str = "structural" if structural else "expanded"
+        self._kinematic_bodies = kinematic_bodies
         self.T_given: sp.Expr = T_given
         self.V: sp.Expr = V_e
         self.P: sp.Expr = P_e
@@ -316,7 +352,19 @@ class System:
 
     # --- derived quantities (memoized; the System never changes) -------------------------------
     @cached_property
+    def T(self) -> sp.Expr:  # noqa: F811 - the structural path sets no T in __init__: built here on first access
+        """The kinetic energy of ``T`` and every body together (see the class docstring)."""
+        total = self.T_given
+        for b in self._kinematic_bodies:
+            total += b.kinetic_energy()
+        return total
+
+    @cached_property
     def _equations(self) -> Equations:
+        if self.derivation == "structural":  # seconds → a fraction: no derivation cache needed (nor its key's T)
+            from ..derive.structural import structural_equations
+
+            return structural_equations(self)
         # loaded from the on-disk derivation cache when this declaration was derived before (same versions)
         from ..codegen.derivation_cache import cached_equations
         from ..derive.lagrange import lagrange_equations
@@ -430,7 +478,8 @@ class System:
         """Every symbol of the declaration (energies, forces, constraints, prescribed motion, bodies' masses,
         positions, inertia and orientation) except ``t`` — a superset of :attr:`parameters`, which holds only
         those that survive in the equations of motion."""
-        exprs = [self.T, self.V, self.P, self.rayleigh, *self.forces.values(), *self.prescribed.values()]
+        T = self.T_given if self.derivation == "structural" else self.T  # the bodies' symbols are added below
+        exprs = [T, self.V, self.P, self.rayleigh, *self.forces.values(), *self.prescribed.values()]
         for c in self.constraints:
             exprs.append(c.velocity)
         for b in self.bodies:
@@ -554,6 +603,23 @@ class System:
         from ..printing import latex_equations
 
         return latex_equations(self)
+
+
+def _kinematics_of(b) -> list:
+    from ..derive.structural import _kinematic_expressions
+
+    return [sp.sympify(e) for e in _kinematic_expressions(b)]
+
+
+def _check_kinematics(system, label: str, exprs: sp.Tuple, coords, presc, problems, declared) -> None:
+    """The checks of T, on bodies' kinematics (masses, positions, inertias, orientations): no velocities, no
+    unknown functions or symbols."""
+    d = exprs.atoms(sp.Derivative)
+    if d:
+        problems.append(f"{label} contain the velocity {sorted(d, key=str)[0]}: positions, orientations, masses "
+                        "and inertias depend on the coordinates and t only")
+        return
+    system._check_expr(label, exprs, coords, presc, 1, problems, declared)
 
 
 def _check_inputs(T, V, specs, presc, P, D, F, coords, problems) -> None:
