@@ -31,7 +31,8 @@ lagrange's sources: about 0.3 s of a warm re-run). Medians of ``--repeats`` runs
 median of per-repeat ratios of runs made side by side; the machine is shared, so read ratios.
 
 Run ``python benchmarks/rerun.py`` (``--quick``: the double pendulum, taylor vs heyoka, one repeat, under a
-minute). Writes ``benchmarks/results/rerun.md``.
+minute; ``--taylor-only --repeats 7 --out rerun_taylor.md``: the taylor route against both heyoka modes on all
+three problems, more repeats of the issue's target). Writes ``benchmarks/results/rerun.md``.
 """
 
 from __future__ import annotations
@@ -141,10 +142,11 @@ for options in routes[: int(sys.argv[1])]:
 """
 
 
-def routes(name: str, quick: bool) -> list[tuple[str, str, str]]:
-    """``(label, kind, argument)`` of each route run on ``name``."""
+def routes(name: str, quick: bool, taylor_only: bool = False) -> list[tuple[str, str, str]]:
+    """``(label, kind, argument)`` of each route run on ``name`` (``taylor_only``: lagrange's taylor route
+    against both heyoka modes)."""
     out = [("lagrange taylor", "lagrange", "taylor python")]
-    if not quick:
+    if not (quick or taylor_only):
         out.append(("lagrange DOP853 (default)", "lagrange", "default python"))
         if name != "nlink10":
             out += [("lagrange taylor numba", "lagrange", "taylor numba"),
@@ -178,11 +180,11 @@ def _child(kind: str, name: str, argument: str, cache: str, preimport: list[str]
     return out | {"cpu": cpu, "wall": wall, "cpu_run": cpu - out["import_cpu"]}
 
 
-def measure(name: str, quick: bool, repeats: int, primed: str) -> dict:
+def measure(name: str, quick: bool, repeats: int, primed: str, taylor_only: bool = False) -> dict:
     """``{label: {"cold": [runs], "warm": [runs]}}``, routes interleaved within each repeat."""
     runs: dict = {}
     for _ in range(repeats):
-        for label, kind, argument in routes(name, quick):
+        for label, kind, argument in routes(name, quick, taylor_only):
             with tempfile.TemporaryDirectory() as tmp:
                 cache = os.path.join(tmp, "cache")
                 if kind == "lagrange":
@@ -217,7 +219,7 @@ def _paired_ratio(runs: list, ref_runs: list, field: str) -> float:
     return statistics.median(a[field] / b[field] for a, b in zip(runs, ref_runs))
 
 
-def write(results: dict, quick: bool, repeats: int) -> str:
+def write(results: dict, quick: bool, repeats: int, flags: str = "") -> str:
     import heyoka
     import numba
     import sympy
@@ -226,8 +228,9 @@ def write(results: dict, quick: bool, repeats: int) -> str:
 
     lines = [
         "# Re-runs in a new process: lagrange vs heyoka.py, cold and warm caches (issue #23 item 4)", "",
-        f"`python benchmarks/rerun.py{' --quick' if quick else ''}`: {platform.machine()}, {os.cpu_count()} CPUs "
-        f"shared with other jobs, Python {platform.python_version()}, lagrange {lagrange.__version__}, sympy "
+        f"`python benchmarks/rerun.py{' --quick' if quick else ''}{flags}`: {platform.machine()}, "
+        f"{os.cpu_count()} CPUs shared with other jobs, Python {platform.python_version()}, lagrange "
+        f"{lagrange.__version__}, sympy "
         f"{sympy.__version__}, numba {numba.__version__}, heyoka.py {heyoka.__version__}. Medians of {repeats} "
         "run(s) per cell, routes interleaved; every run is a fresh interpreter. rtol = atol = 1e-10, 1001 output "
         "times; final states agree between cold and warm runs bit for bit (checked). lagrange's modules are "
@@ -272,6 +275,9 @@ def write(results: dict, quick: bool, repeats: int) -> str:
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--quick", action="store_true", help="double pendulum, taylor vs heyoka, one repeat")
+    ap.add_argument("--taylor-only", action="store_true",
+                    help="only lagrange's taylor route against heyoka's default and compact modes (more repeats "
+                         "of the issue's target in the same time)")
     ap.add_argument("--repeats", type=int, default=3)
     ap.add_argument("--problems", nargs="*", default=None)
     ap.add_argument("--out", default="rerun.md", help="file name under benchmarks/results/")
@@ -289,10 +295,12 @@ def main(argv=None) -> int:
             if entry.name.startswith(("derived_", "source_", "tape_")):
                 entry.unlink()
         for name in problems:
-            results[name] = measure(name, args.quick, repeats, primed)
+            results[name] = measure(name, args.quick, repeats, primed, args.taylor_only)
     RESULTS.mkdir(exist_ok=True)
     out = RESULTS / args.out
-    out.write_text(write(results, args.quick, repeats))
+    flags = (f" --taylor-only --repeats {repeats}" if args.taylor_only else "") + (f" --out {args.out}"
+                                                                                  if args.out != "rerun.md" else "")
+    out.write_text(write(results, args.quick, repeats, flags))
     print(out.read_text())
     return 0
 
