@@ -256,9 +256,9 @@ class _KeyHasher:
             else:
                 name = f"{cls.__module__}.{cls.__qualname__}"
             return _h(b"n", name.encode(), *[self.digest(a) for a in args])
-        if isinstance(obj, (tuple, list)):
-            return _h(b"t" if isinstance(obj, tuple) else b"l", *[self.digest(a) for a in obj])
-        if isinstance(obj, str):
+        if type(obj) is tuple or type(obj) is list:  # exact types: a subclass (a namedtuple) is an "other" object
+            return _h(b"t" if type(obj) is tuple else b"l", *[self.digest(a) for a in obj])
+        if type(obj) is str:
             return _h(b"s", obj.encode())
         if obj is None or type(obj) in (bool, int, float):
             return _h(b"p", type(obj).__name__.encode(), repr(obj).encode())
