@@ -18,15 +18,21 @@ Scenarios: *cold* — an empty model cache (lagrange: a copy of a cache that hol
 pieces, the generic numba loops and the C interpreter, built by a priming run on another model; heyoka: an
 empty disk cache); *warm* — a second process on the same cache. Per repeat the order is interleaved
 (route A cold, A warm, route B cold, B warm, ...). CPU is the child's user + system time
-(``resource.getrusage(RUSAGE_CHILDREN)``, imports and interpreter start counted); the child also reports the
-CPU time it spent before its first line after the imports, so the table gives CPU with and without imports
-(lagrange: ``import lagrange, numpy, scipy.integrate, sympy`` and ``numba`` for the numba routes — lagrange
-loads them lazily, so they are imported explicitly to be counted as imports; lagrange's own submodules still
-load during the run and are counted in it; heyoka: ``import heyoka, numpy``). JIT and compile costs are
-always counted. Medians of ``--repeats`` runs; the machine is shared, so read ratios.
+(``resource.getrusage(RUSAGE_CHILDREN)``). *With imports*: the whole process, interpreter start and every
+import counted; the lagrange child imports only ``lagrange`` (lazy), so exactly what the route loads is
+counted (each run reports which of numpy, sympy, scipy.linalg, scipy.integrate, numba and symengine it
+loaded). *Without imports*: heyoka's child reports the CPU spent up to the end of ``import heyoka, numpy``,
+subtracted from its warm run; for lagrange a third process (warm too) imports, before the clock, exactly the
+modules its plain warm run loaded and triggers sympy's deferred imports (its first ``Add``), and its CPU after
+that is the column (lagrange's own submodules load during the run and are counted in it). JIT and compile
+costs are always counted. lagrange's modules are byte-compiled first (``compileall``, as ``pip install``
+does; without it ``PYTHONDONTWRITEBYTECODE=1``, set on this machine, makes every fresh process recompile
+lagrange's sources: about 0.3 s of a warm re-run). Medians of ``--repeats`` runs; the ratio columns are the
+median of per-repeat ratios of runs made side by side; the machine is shared, so read ratios.
 
 Run ``python benchmarks/rerun.py`` (``--quick``: the double pendulum, taylor vs heyoka, one repeat, under a
-minute). Writes ``benchmarks/results/rerun.md``.
+minute; ``--taylor-only --repeats 7 --out rerun_taylor.md``: the taylor route against both heyoka modes on all
+three problems, more repeats of the issue's target). Writes ``benchmarks/results/rerun.md``.
 """
 
 from __future__ import annotations
@@ -46,7 +52,12 @@ from pathlib import Path
 
 import numpy as np
 
+from lagrange.bench.first_result import byte_compile_lagrange
+
 RESULTS = Path(__file__).parent / "results"
+#: the third-party modules a lagrange run may load (reported by each run; the *w/o imports* run of a route
+#: imports those its plain warm run loaded before the clock starts)
+HEAVY = ("numpy", "sympy", "scipy.linalg", "scipy.integrate", "numba", "symengine")
 PROBLEMS = ("double_pendulum", "nlink10", "top")
 TOL = 1e-10
 
@@ -60,13 +71,15 @@ def problem(name):
 """
 
 _LAGRANGE = _MODELS + """
-import json, sys, time
+import importlib, json, sys, time
 c0 = time.process_time()
 import lagrange as lg
-import numpy, scipy.integrate, sympy  # what a run uses; lagrange itself loads them lazily
 name, method, backend = sys.argv[1], sys.argv[2], sys.argv[3]
-if backend == "numba":
-    import numba
+for module in sys.argv[4].split(",") if len(sys.argv) > 4 and sys.argv[4] else ():
+    importlib.import_module(module)  # the *w/o imports* run: what the plain run loaded, imported before the clock
+if len(sys.argv) > 4:
+    import sympy
+    sympy.Symbol("a") + sympy.Symbol("b")  # sympy's deferred imports (sympy.tensor, ...) on its first Add
 c1 = time.process_time()
 t_end, y0 = problem(name)
 if name == "top":
@@ -85,8 +98,8 @@ options = {} if method == "default" else {"method": method}
 tr = system.simulate(t_end, initial, params, backend=backend, rtol=1e-10, atol=1e-10, n_points=1001, **options)
 from lagrange.codegen.derivation_cache import statistics
 print(json.dumps({"import_cpu": c1 - c0, "final": tr.y[-1, : len(y0) // 2].tolist(), "label": tr.method,
-                  "cache": statistics()}))
-"""
+                  "cache": statistics(), "loaded": [m for m in "HEAVY".split(",") if m in sys.modules]}))
+""".replace("HEAVY", ",".join(HEAVY))
 
 _HEYOKA = _MODELS + """
 import json, sys, time
@@ -129,10 +142,11 @@ for options in routes[: int(sys.argv[1])]:
 """
 
 
-def routes(name: str, quick: bool) -> list[tuple[str, str, str]]:
-    """``(label, kind, argument)`` of each route run on ``name``."""
+def routes(name: str, quick: bool, taylor_only: bool = False) -> list[tuple[str, str, str]]:
+    """``(label, kind, argument)`` of each route run on ``name`` (``taylor_only``: lagrange's taylor route
+    against both heyoka modes)."""
     out = [("lagrange taylor", "lagrange", "taylor python")]
-    if not quick:
+    if not (quick or taylor_only):
         out.append(("lagrange DOP853 (default)", "lagrange", "default python"))
         if name != "nlink10":
             out += [("lagrange taylor numba", "lagrange", "taylor numba"),
@@ -144,12 +158,14 @@ def routes(name: str, quick: bool) -> list[tuple[str, str, str]]:
     return out
 
 
-def _child(kind: str, name: str, argument: str, cache: str) -> dict:
+def _child(kind: str, name: str, argument: str, cache: str, preimport: list[str] | None = None) -> dict:
     env = dict(os.environ, LAGRANGE_CACHE_DIR=cache)
     env.pop("NUMBA_CACHE_DIR", None)
     env.pop("LAGRANGE_DERIVATION_CACHE", None)
     if kind == "lagrange":
         argv = [sys.executable, "-c", _LAGRANGE, name, *argument.split()]
+        if preimport is not None:
+            argv.append(",".join(preimport))
     else:
         argv = [sys.executable, "-c", _HEYOKA, name, argument, cache]
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
@@ -164,11 +180,11 @@ def _child(kind: str, name: str, argument: str, cache: str) -> dict:
     return out | {"cpu": cpu, "wall": wall, "cpu_run": cpu - out["import_cpu"]}
 
 
-def measure(name: str, quick: bool, repeats: int, primed: str) -> dict:
+def measure(name: str, quick: bool, repeats: int, primed: str, taylor_only: bool = False) -> dict:
     """``{label: {"cold": [runs], "warm": [runs]}}``, routes interleaved within each repeat."""
     runs: dict = {}
     for _ in range(repeats):
-        for label, kind, argument in routes(name, quick):
+        for label, kind, argument in routes(name, quick, taylor_only):
             with tempfile.TemporaryDirectory() as tmp:
                 cache = os.path.join(tmp, "cache")
                 if kind == "lagrange":
@@ -177,14 +193,20 @@ def measure(name: str, quick: bool, repeats: int, primed: str) -> dict:
                     os.mkdir(cache, 0o700)
                 cold = _child(kind, name, argument, cache)
                 warm = _child(kind, name, argument, cache)
-            if kind == "lagrange" and warm["cache"]["tape" if "taylor" in argument else "derived"]["hit"] < 1:
-                raise AssertionError(f"{label} {name}: the warm run missed the cache: {warm['cache']}")
-            if warm["final"] != cold["final"]:
-                raise AssertionError(f"{label} {name}: the warm run differs from the cold run")
-            entry = runs.setdefault(label, {"cold": [], "warm": []})
+                # lagrange's *w/o imports*: a third run (warm too) that imports what the plain warm run loaded
+                # before the clock; heyoka's child imports heyoka and numpy first anyway, so its warm run gives both
+                bare = _child(kind, name, argument, cache, warm["loaded"]) if kind == "lagrange" else warm
+            for run in (warm, bare):
+                if kind == "lagrange" and run["cache"]["tape" if "taylor" in argument else "derived"]["hit"] < 1:
+                    raise AssertionError(f"{label} {name}: the warm run missed the cache: {run['cache']}")
+                if run["final"] != cold["final"]:
+                    raise AssertionError(f"{label} {name}: the warm run differs from the cold run")
+            entry = runs.setdefault(label, {"cold": [], "warm": [], "bare": []})
             entry["cold"].append(cold)
             entry["warm"].append(warm)
-            print(f"{name:16s} {label:28s} cold {cold['cpu']:6.2f} s CPU  warm {warm['cpu']:6.2f} s CPU", flush=True)
+            entry["bare"].append(bare)
+            print(f"{name:16s} {label:28s} cold {cold['cpu']:6.2f} s CPU  warm {warm['cpu']:6.2f} s CPU  "
+                  f"w/o imports {bare['cpu_run']:5.2f} s CPU", flush=True)
     return runs
 
 
@@ -192,7 +214,12 @@ def _median(runs: list, field: str) -> float:
     return statistics.median(r[field] for r in runs)
 
 
-def write(results: dict, quick: bool, repeats: int) -> str:
+def _paired_ratio(runs: list, ref_runs: list, field: str) -> float:
+    """Median over repeats of run_i / ref_i (the two measured side by side in the same repeat)."""
+    return statistics.median(a[field] / b[field] for a, b in zip(runs, ref_runs))
+
+
+def write(results: dict, quick: bool, repeats: int, flags: str = "") -> str:
     import heyoka
     import numba
     import sympy
@@ -201,38 +228,46 @@ def write(results: dict, quick: bool, repeats: int) -> str:
 
     lines = [
         "# Re-runs in a new process: lagrange vs heyoka.py, cold and warm caches (issue #23 item 4)", "",
-        f"`python benchmarks/rerun.py{' --quick' if quick else ''}`: {platform.machine()}, {os.cpu_count()} CPUs "
-        f"shared with other jobs, Python {platform.python_version()}, lagrange {lagrange.__version__}, sympy "
+        f"`python benchmarks/rerun.py{' --quick' if quick else ''}{flags}`: {platform.machine()}, "
+        f"{os.cpu_count()} CPUs shared with other jobs, Python {platform.python_version()}, lagrange "
+        f"{lagrange.__version__}, sympy "
         f"{sympy.__version__}, numba {numba.__version__}, heyoka.py {heyoka.__version__}. Medians of {repeats} "
         "run(s) per cell, routes interleaved; every run is a fresh interpreter. rtol = atol = 1e-10, 1001 output "
-        "times; final states agree between cold and warm runs bit for bit (checked).", "",
+        "times; final states agree between cold and warm runs bit for bit (checked). lagrange's modules are "
+        "byte-compiled first, as `pip install` does (heyoka's, sympy's, numpy's and scipy's `.pyc` files come "
+        "from their installs).", "",
         "*cold*: empty model cache (once-per-machine pieces primed: numba's generic loops, the C interpreter; "
         "heyoka: empty on-disk JIT cache). *warm*: a second process on the same cache (lagrange: derived "
         "equations, generated source, Taylor tape and numba bundles loaded; heyoka: its on-disk LLVM cache). "
-        "CPU = user + system of the child (getrusage RUSAGE_CHILDREN); *with imports* counts the interpreter "
-        "start and the imports, *without* subtracts the CPU spent up to the end of `import lagrange, numpy, "
-        "scipy.integrate, sympy` (+ `numba` on numba routes; resp. `import heyoka, numpy`). "
-        "JIT/compile costs are counted. Ratios are lagrange warm / heyoka's "
-        "fastest warm route on the same problem (< 1: lagrange's re-run is faster).", "",
-        "| problem | route | cold CPU | warm CPU | warm CPU w/o imports | warm wall | warm / heyoka warm "
-        "(with imports) | warm / heyoka warm (w/o imports) | final state vs heyoka |",
-        "|---|---|---|---|---|---|---|---|---|"]
+        "Every run declares the model itself (lagrange: `System(...)`, which builds T from the bodies and "
+        "validates the declaration; heyoka: the Lagrangian as heyoka expressions and `heyoka.lagrangian`). "
+        "CPU = user + system of the child (getrusage RUSAGE_CHILDREN). *warm CPU (with imports)*: everything "
+        "from interpreter start to exit — imports, declaration, cache key and load, compile/JIT, integration. "
+        "*w/o imports*: the same minus the CPU spent up to the end of the imports: for heyoka `import heyoka, "
+        "numpy` in the warm run; for lagrange a third process (warm as well) that imports, before the clock, "
+        "`lagrange` and exactly the third-party modules the plain warm run loaded (column *warm run imports*) and "
+        "triggers sympy's deferred imports (its first `Add`). JIT/compile costs are always counted. Ratio "
+        "columns: lagrange / heyoka's fastest warm route in that column on the same problem, the median over "
+        "repeats of the ratio of the two runs made side by side in one repeat (< 1: lagrange's re-run is "
+        "cheaper).", "",
+        "| problem | route | warm run imports | cold CPU | warm CPU (with imports) | warm CPU w/o imports | "
+        "warm wall | warm / heyoka warm (with imports) | warm / heyoka warm (w/o imports) | final state vs heyoka |",
+        "|---|---|---|---|---|---|---|---|---|---|"]
     for name, runs in results.items():
         heyoka_labels = [label for label in runs if label.startswith("heyoka")]
         best = min(heyoka_labels, key=lambda lb: _median(runs[lb]["warm"], "cpu"))
-        best_cpu = _median(runs[best]["warm"], "cpu")
-        best_run = _median(runs[best]["warm"], "cpu_run")
+        best_bare = min(heyoka_labels, key=lambda lb: _median(runs[lb]["bare"], "cpu_run"))
         ref = np.array(runs[best]["warm"][0]["final"])
         for label, entry in runs.items():
-            warm_cpu = _median(entry["warm"], "cpu")
-            warm_run = _median(entry["warm"], "cpu_run")
             diff = float(np.max(np.abs(np.array(entry["warm"][0]["final"]) - ref)))
+            loaded = ", ".join(entry["warm"][0].get("loaded", ["heyoka", "numpy"]))
             lines.append(
-                f"| {name} | {label} | {_median(entry['cold'], 'cpu'):.2f} | {warm_cpu:.2f} | {warm_run:.2f} | "
-                f"{_median(entry['warm'], 'wall'):.2f} | {warm_cpu / best_cpu:.2f} | {warm_run / best_run:.2f} | "
-                f"{diff:.1e} |")
-    lines += ["", "heyoka's fastest warm route per problem is the reference of the ratio columns. The 10-link "
-              "pendulum is chaotic (errors grow ~1e5-fold over t = 10), so its final states differ between "
+                f"| {name} | {label} | {loaded} | {_median(entry['cold'], 'cpu'):.2f} | "
+                f"{_median(entry['warm'], 'cpu'):.2f} | {_median(entry['bare'], 'cpu_run'):.2f} | "
+                f"{_median(entry['warm'], 'wall'):.2f} | {_paired_ratio(entry['warm'], runs[best]['warm'], 'cpu'):.2f}"
+                f" | {_paired_ratio(entry['bare'], runs[best_bare]['bare'], 'cpu_run'):.2f} | {diff:.1e} |")
+    lines += ["", "heyoka's fastest warm route per problem and column is the reference of the ratio columns. The "
+              "10-link pendulum is chaotic (errors grow ~1e5-fold over t = 10), so its final states differ between "
               "integrators at this tolerance; the double pendulum and the top agree."]
     return "\n".join(lines) + "\n"
 
@@ -240,6 +275,9 @@ def write(results: dict, quick: bool, repeats: int) -> str:
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--quick", action="store_true", help="double pendulum, taylor vs heyoka, one repeat")
+    ap.add_argument("--taylor-only", action="store_true",
+                    help="only lagrange's taylor route against heyoka's default and compact modes (more repeats "
+                         "of the issue's target in the same time)")
     ap.add_argument("--repeats", type=int, default=3)
     ap.add_argument("--problems", nargs="*", default=None)
     ap.add_argument("--out", default="rerun.md", help="file name under benchmarks/results/")
@@ -247,6 +285,7 @@ def main(argv=None) -> int:
     repeats = 1 if args.quick else args.repeats
     problems = args.problems or (("double_pendulum",) if args.quick else PROBLEMS)
     results = {}
+    byte_compile_lagrange()  # as an installed package: every fresh process then loads .pyc files
     with tempfile.TemporaryDirectory() as tmp:
         primed = os.path.join(tmp, "primed")
         env = dict(os.environ, LAGRANGE_CACHE_DIR=primed)
@@ -256,10 +295,12 @@ def main(argv=None) -> int:
             if entry.name.startswith(("derived_", "source_", "tape_")):
                 entry.unlink()
         for name in problems:
-            results[name] = measure(name, args.quick, repeats, primed)
+            results[name] = measure(name, args.quick, repeats, primed, args.taylor_only)
     RESULTS.mkdir(exist_ok=True)
     out = RESULTS / args.out
-    out.write_text(write(results, args.quick, repeats))
+    flags = (f" --taylor-only --repeats {repeats}" if args.taylor_only else "") + (f" --out {args.out}"
+                                                                                  if args.out != "rerun.md" else "")
+    out.write_text(write(results, args.quick, repeats, flags))
     print(out.read_text())
     return 0
 

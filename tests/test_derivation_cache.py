@@ -387,3 +387,50 @@ def test_cache_is_pruned_to_its_limit_oldest_first(cache, monkeypatch):
     assert f"derived_{11:064x}.pkl" in names and (root / "model_abc.py").exists()
     assert _declare().derived == system.derived and calls["derive"] == 1  # the new entry survived: a hit
     assert dc.prune(root, 100) == 0
+
+
+def _near_misses() -> list[tuple[object, object]]:
+    """Pairs of different declarations' pieces that a careless content hash could conflate."""
+    a, b, x = sp.symbols("a b x")
+    f = sp.Function("f")
+    return [
+        (x, 1.0 * x), (sp.Float("0.1", 15), sp.Float("0.1", 30)), (sp.Rational(1, 2), sp.Float(0.5)),
+        (sp.Symbol("a", positive=True), a), (sp.Function("f", real=True)(t), f(t)), (a - b, b - a),
+        (sp.sin(a), sp.cos(a)), (sp.Dummy("a"), sp.Dummy("a")), (("ab", "c"), ("a", "bc")),
+        (((a, b), x), (a, (b, x))), ([a], (a,)), (1, 1.0), (1, True), (None, "None"), ({"k": 1}, {"k": 1.0}),
+        (f(t).diff(t), f(t).diff(t, 2)),
+        (sp.Matrix([[a, b]]), sp.ImmutableMatrix([[a, b]])), (sp.ImmutableMatrix([[a, b]]), sp.ImmutableMatrix([a, b])),
+    ]
+
+
+def test_hash_tree_separates_near_misses_and_ignores_sharing():
+    """The key's hash tree (dc._KeyHasher) gives different digests to different content — the near misses above,
+    and every pair of the declaration variants of test_every_declared_change_changes_the_key, compared with
+    their printed srepr as the independent truth — and equal digests to equal content built twice (sympy's
+    cache cleared in between, so no object is shared) or rebuilt node by node."""
+    for left, right in _near_misses():
+        assert dc._fingerprint(left) != dc._fingerprint(right), (left, right)
+    x = sp.Symbol("x")  # a Poly's domain is not in its srepr: Poly(x**2, x) and over QQ print alike
+    assert sp.srepr(sp.Poly(x**2, x)) == sp.srepr(sp.Poly(x**2, x, domain="QQ"))
+    assert dc._fingerprint(sp.Poly(x**2, x)) is None and dc._fingerprint((x, sp.Poly(x**2, x, domain="QQ"))) is None
+    variants = _variants()
+    texts = {label: dc._text(dc._declaration(s)) for label, s in variants.items()}
+    digests = {label: dc._fingerprint(dc._declaration(s)) for label, s in variants.items()}
+    for one in variants:
+        for other in variants:
+            assert (texts[one] == texts[other]) == (digests[one] == digests[other]), (one, other)
+
+    from sympy.core.cache import clear_cache
+
+    from lagrange.examples import n_link_pendulum
+
+    first = n_link_pendulum(3, symbolic=True)
+    clear_cache()
+    second = n_link_pendulum(3, symbolic=True)
+    assert first.T is not second.T and dc._fingerprint(first.T) == dc._fingerprint(second.T)
+
+    def rebuild(e):
+        return e.func(*[rebuild(arg) for arg in e.args]) if e.args else e
+
+    assert dc._fingerprint(rebuild(first.T)) == dc._fingerprint(first.T)
+    assert dc.declaration_key(first) == dc.declaration_key(second)

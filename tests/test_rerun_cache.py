@@ -36,8 +36,15 @@ _CHILD = textwrap.dedent("""
         tr = s.simulate(2.0, {"x": 0.5, "x_dot": 0.0}, {"m": 1.0, "k": 4.0}, method="taylor", rtol=1e-12,
                         atol=1e-12, n_points=5)
     print(json.dumps({"stats": dc.statistics(), "final": tr.y[-1].tolist(), "method": tr.method,
-                      "warnings": [type(w.message).__name__ for w in caught]}))
+                      "warnings": [type(w.message).__name__ for w in caught],
+                      "loaded": sorted(m for m in sys.modules if m.split(".")[0] in ("scipy", "numba", "symengine")
+                                       or m in ("numpy.f2py", "numpy.testing", "importlib.metadata"))}))
 """)
+
+#: what a re-run with ``method="taylor"`` does not use, so ``import lagrange`` plus the run must not import it:
+#: scipy (its integrators, ``scipy.linalg``), numba, symengine (the derivation is loaded, not redone),
+#: lambdify's numpy namespace (``numpy.f2py``, ``numpy.testing``) and ``importlib.metadata`` (symengine's version)
+_NOT_ON_A_TAYLOR_RERUN = ("scipy", "numba", "symengine", "numpy.f2py", "numpy.testing", "importlib.metadata")
 
 
 def _run(cache, quartic: float = 0.0) -> dict:
@@ -68,6 +75,8 @@ def test_fresh_process_rerun_hits_changed_model_misses_tampered_tape_refused(tmp
     for kind in ("derived", "tape"):
         assert warm["stats"][kind] == {"hit": 1, "miss": 0, "refused": 0}, (kind, warm["stats"])
     assert warm["stats"]["source"]["miss"] == 0
+    assert not [m for m in warm["loaded"] if m.split(".")[0] in _NOT_ON_A_TAYLOR_RERUN
+                or m in _NOT_ON_A_TAYLOR_RERUN], warm["loaded"]
 
     changed = _run(tmp_path, quartic=0.25)
     assert changed["stats"]["derived"]["miss"] == 1 and changed["stats"]["tape"] == {"hit": 0, "miss": 1,
@@ -82,6 +91,46 @@ def test_fresh_process_rerun_hits_changed_model_misses_tampered_tape_refused(tmp
     assert tampered["stats"]["tape"] == {"hit": 0, "miss": 1, "refused": 1}, tampered["stats"]
     assert "CacheIntegrityWarning" in tampered["warnings"]
     assert tampered["final"] == cold["final"]
+
+
+_TOP = textwrap.dedent("""
+    import json, sys
+    import lagrange as lg
+    from lagrange.codegen import derivation_cache as dc
+    psi, th, ph = lg.coordinates("psi theta phi")
+    M, g, l, I1, I3 = lg.parameters("M g l I1 I3")
+    body = lg.RigidBody(M, (I1, I1, I3), orientation=lg.EulerAngles(psi, th, ph), com=(0, 0, l))
+    top = lg.System([psi, th, ph], bodies=[body], V=M * g * body.centre_of_mass[2], name="top")
+    initial = {"psi": 0.0, "theta": 0.6, "phi": 0.0, "psi_dot": 1.0, "theta_dot": 0.0, "phi_dot": 60.0}
+    params = {"M": 1.0, "g": 9.81, "l": 0.2, "I1": 0.05, "I3": 0.02}
+    tr = top.simulate(0.5, initial, params, method="taylor", rtol=1e-12, atol=1e-12, n_points=3)
+    loaded = sorted(sys.modules)  # before the energy is asked for (the diagnostics are built on first use)
+    h = tr.energy.tolist()
+    print(json.dumps({"stats": dc.statistics(), "final": tr.y[-1].tolist(), "energy": [h[0], h[-1]],
+                      "loaded": loaded}))
+""")
+
+
+def test_rerun_of_a_top_with_euler_angles_loads_everything_and_imports_no_scipy(tmp_path):
+    """A heavy top declared with Euler angles (its run checks the mass matrix's condition at the initial state:
+    the gimbal-lock warning) re-run in a fresh process: every entry a hit, the same final state bit for bit, the
+    energy conserved, and none of the modules a Taylor re-run does not use imported."""
+    env = dict(os.environ, LAGRANGE_CACHE_DIR=str(tmp_path))
+    env.pop(dc.ENV_VAR, None)
+    runs = []
+    for _ in range(2):
+        r = subprocess.run([sys.executable, "-c", _TOP], env=env, capture_output=True, text=True, timeout=240)
+        assert r.returncode == 0, r.stderr[-3000:]
+        runs.append(json.loads(r.stdout.strip().splitlines()[-1]))
+    cold, warm = runs
+    assert cold["stats"]["derived"] == {"hit": 0, "miss": 1, "refused": 0}
+    for kind in ("derived", "tape"):
+        assert warm["stats"][kind] == {"hit": 1, "miss": 0, "refused": 0}, (kind, warm["stats"])
+    assert warm["final"] == cold["final"]
+    h0, h1 = warm["energy"]
+    assert abs(h1 - h0) <= 1e-9 * abs(h0)  # a conservative top: T + V is an integral of the motion
+    unused = [m for m in warm["loaded"] if m.split(".")[0] in _NOT_ON_A_TAYLOR_RERUN or m in _NOT_ON_A_TAYLOR_RERUN]
+    assert not unused, unused
 
 
 @pytest.fixture
@@ -151,3 +200,29 @@ def test_loaded_equations_are_the_derived_ones(cache, monkeypatch):
     for name in ("mass_matrix", "forcing", "kinetic", "potential"):
         a, b = getattr(loaded, name), getattr(fresh, name)
         assert sp.srepr(a) == sp.srepr(b) and a == b and hash(a) == hash(b), name
+
+
+def test_mass_matrix_function_matches_the_reference_lambdify():
+    """``NumericModel.mass_matrix`` (the CSE'd function of M alone, on the math module, which the gimbal-lock
+    check of every run with Euler angles calls) equals M from the reference functions (plain lambdify of M and
+    f on numpy, the oracle) at random states: a heavy top (M depends on θ) and a pendulum whose length is
+    prescribed in time (M depends on t)."""
+    psi, th, ph = lg.coordinates("psi theta phi")
+    M_, g, l_, I1, I3 = lg.parameters("M g l I1 I3")
+    body = lg.RigidBody(M_, (I1, I1, I3), orientation=lg.EulerAngles(psi, th, ph), com=(0, 0, l_))
+    top = lg.System([psi, th, ph], bodies=[body], V=M_ * g * body.centre_of_mass[2])
+    q = lg.coordinates("q")
+    m, a = lg.parameters("m a")
+    length = 1 + a * sp.sin(lg.t)
+    swing = lg.System([q], bodies=[lg.Particle(m, (length * sp.sin(q), -length * sp.cos(q)))],
+                      V=-m * g * length * sp.cos(q))
+    rng = np.random.default_rng(7)
+    cases = ((top, {"M": 1.3, "g": 9.81, "l": 0.2, "I1": 0.05, "I3": 0.02}), (swing, {"m": 0.7, "a": 0.3, "g": 9.81}))
+    for system, params in cases:
+        model = system.compile(params)
+        for _ in range(5):
+            t0, y = float(rng.uniform(0, 3)), rng.uniform(-1.0, 1.0, 2 * model.n)
+            ref, _ = model.mass_and_forcing(t0, y)
+            got = model.mass_matrix(t0, y)
+            assert got.shape == (model.n, model.n)
+            np.testing.assert_allclose(got, ref, rtol=1e-13, atol=1e-15)

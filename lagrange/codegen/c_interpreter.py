@@ -71,7 +71,7 @@ def extension_path() -> Path | None:
 def library_path(cc: list[str]) -> Path:
     """Where the library built by ``cc`` lives: the cache directory, named by a hash of the source, the
     compiler command, the flags and the platform."""
-    from .numba_backend import cache_dir
+    from .cache import cache_dir
 
     key = hashlib.sha256(b"\0".join([SOURCE.read_bytes(), " ".join(cc + list(FLAGS)).encode(),
                                      platform.machine().encode(), sys.platform.encode()])).hexdigest()[:24]

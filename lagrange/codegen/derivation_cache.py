@@ -7,14 +7,14 @@ to the numba bundles:
 
 ``derived_<key>.pkl``
     the pickled :class:`~lagrange.derive.equations.Equations` of a :class:`~lagrange.System`, under
-    :func:`declaration_key`: a SHA-256 of the ``srepr`` of everything the derivation reads from the
+    :func:`declaration_key`: a SHA-256 over a hash tree of everything the derivation reads from the
     declaration (coordinates with their assumptions, T, V, P, the Rayleigh function, the generalized
     forces, the constraints, prescribed motions, declared parameters, name) and of :func:`environment`;
 ``source_<key>.txt``
     the generated source of one backend, under a SHA-256 of the equations' fingerprint
     (:func:`equations_fingerprint`), the code generator's options and :func:`environment`. Equations
     derived from a declaration are fingerprinted by their declaration key (the derivation is a function of
-    the declaration and the environment, both in the key); equations built any other way by the ``srepr``
+    the declaration and the environment, both in the key); equations built any other way by the hash tree
     of their content, so they hit exactly when their content is the same;
 ``tape_<key>.npz``
     the Taylor tape (:class:`~lagrange.codegen.tape.Tape`: the CSE translated into numbered instructions) of
@@ -73,6 +73,8 @@ __all__ = ["ENV_VAR", "MAX_ENTRIES_VAR", "prune",
 #: environment variable that turns the cache off (``0``, ``off``, ``false``, ``no``)
 ENV_VAR = "LAGRANGE_DERIVATION_CACHE"
 _FORMAT = 1
+#: how declarations and equations are turned into keys (:class:`_KeyHasher`; the srepr text before)
+_KEY_FORMAT = "merkle-sha256 v1"
 _OFF = ("0", "off", "false", "no")
 #: System attributes that are not in the key, and why (tests check every other attribute is keyed)
 UNKEYED_ATTRIBUTES = {
@@ -127,8 +129,19 @@ def _source_digest() -> str:
 @lru_cache(maxsize=1)
 def _symengine_version() -> str:
     """symengine's installed version, or "none" (it differentiates large T's when installed, which orders
-    terms differently). Read from the package metadata: importing symengine (20–40 ms) is left to the models
-    that use it."""
+    terms differently). Read from the name of its ``symengine-<version>.dist-info`` directory next to the
+    package: importing symengine (20–40 ms) is left to the models that use it, and ``importlib.metadata``
+    (40–130 ms of imports, ``email`` among them, on a warm re-run) is only the fallback when that directory
+    is not found."""
+    import importlib.util
+
+    spec = importlib.util.find_spec("symengine")
+    if spec is None:
+        return "none"
+    for location in spec.submodule_search_locations or ():
+        found = sorted(Path(location).parent.glob("symengine-*.dist-info"))
+        if len(found) == 1:
+            return found[0].name[len("symengine-"):-len(".dist-info")]
     import importlib.metadata
 
     try:
@@ -182,10 +195,86 @@ def _digest(*parts: str) -> str:
 
 
 def _text(obj) -> str | None:
-    """The key text of ``obj`` (nested tuples of sympy objects, strings, bools, None), or None when it
-    holds a sympy class defined outside sympy and lagrange."""
+    """The ``srepr``-like text of ``obj`` (:class:`_KeyPrinter`), or None when it holds a sympy class defined
+    outside sympy and lagrange."""
     try:
         return _KeyPrinter().doprint(obj)
+    except _Uncacheable:
+        return None
+
+
+def _h(tag: bytes, *parts: bytes) -> bytes:
+    """SHA-256 of a one-byte ``tag`` and ``parts``, each prefixed with its length (no two different part
+    lists give the same input)."""
+    h = hashlib.sha256(tag)
+    for part in parts:
+        h.update(len(part).to_bytes(8, "little"))
+        h.update(part)
+    return h.digest()
+
+
+class _KeyHasher:
+    """A content digest of a declaration or of equations: a hash tree (Merkle) over the expression graph.
+
+    A sympy node with arguments hashes its class (module and name; for an applied undefined function the
+    function's name and assumptions) and the digests of its ``args`` in the order sympy stores them, which
+    determine the node (``expr.func(*expr.args) == expr``); a node without arguments — symbols with their
+    assumptions, numbers with their exact value and precision, ``t`` — hashes its :class:`_KeyPrinter` text
+    (``srepr``). Tuples, lists, strings, numbers, None and dictionaries (in their order) hash their type and
+    content; any other object its type and printed text, as the printer-based key did. A sympy class defined
+    outside sympy and lagrange, and a ``Poly`` (its domain is neither in its arguments nor in its ``srepr``:
+    ``Poly(x**2, x)`` and ``Poly(x**2, x, domain="QQ")`` print alike) raise :class:`_Uncacheable`. Every
+    digest is tagged with its kind and its parts are length-prefixed, so different content never gives the
+    same input to SHA-256: two declarations sharing a key would need a SHA-256 collision.
+
+    A subexpression met again (the same object: ``sin(q1)`` in every term of a pendulum's T) is hashed once
+    (memo by ``id``; the memo holds the objects, so an id is never reused while hashing), where the printed
+    ``srepr`` repeated it. Against printing the ``srepr``: a declaration's key 3× (heavy top) to 18× (20-link
+    pendulum) cheaper, equations' fingerprints 3× to 30×.
+    """
+
+    def __init__(self):
+        self._memo: dict[int, tuple[object, bytes]] = {}
+        self._printer = _KeyPrinter()
+
+    def digest(self, obj) -> bytes:
+        hit = self._memo.get(id(obj))
+        if hit is not None:
+            return hit[1]
+        out = self._digest(obj)
+        self._memo[id(obj)] = (obj, out)
+        return out
+
+    def _digest(self, obj) -> bytes:
+        if isinstance(obj, sp.Basic):
+            cls = type(obj)
+            if not _known(cls) or isinstance(obj, sp.Poly):  # a Poly's domain is neither in args nor in srepr
+                raise _Uncacheable(cls.__qualname__)
+            args = obj.args
+            if not args:
+                return _h(b"a", self._printer.doprint(obj).encode())
+            if isinstance(cls, UndefinedFunction):
+                name = self._printer._print_UndefinedFunction(cls)
+            else:
+                name = f"{cls.__module__}.{cls.__qualname__}"
+            return _h(b"n", name.encode(), *[self.digest(a) for a in args])
+        if type(obj) is tuple or type(obj) is list:  # exact types: a subclass (a namedtuple) is an "other" object
+            return _h(b"t" if type(obj) is tuple else b"l", *[self.digest(a) for a in obj])
+        if type(obj) is str:
+            return _h(b"s", obj.encode())
+        if obj is None or type(obj) in (bool, int, float):
+            return _h(b"p", type(obj).__name__.encode(), repr(obj).encode())
+        if type(obj) is dict:
+            return _h(b"d", *[self.digest(kv) for kv in obj.items()])
+        return _h(b"o", f"{type(obj).__module__}.{type(obj).__qualname__}".encode(),
+                  self._printer.doprint(obj).encode())
+
+
+def _fingerprint(obj) -> str | None:
+    """The hex digest of ``obj`` by :class:`_KeyHasher`, or None when it holds a sympy class defined outside
+    sympy and lagrange."""
+    try:
+        return _KeyHasher().digest(obj).hex()
     except _Uncacheable:
         return None
 
@@ -206,8 +295,9 @@ def _declaration(system) -> tuple:
 
 
 def declaration_key(system) -> str | None:
-    """The key of ``system``'s derivation entry: a SHA-256 over the ``srepr`` of its declaration (every
-    attribute the derivation reads) and :func:`environment`; None when the declaration cannot be cached.
+    """The key of ``system``'s derivation entry: a SHA-256 over the hash tree (:class:`_KeyHasher`) of its
+    declaration (every attribute the derivation reads) and :func:`environment`; None when the declaration
+    cannot be cached.
 
     >>> import lagrange as lg
     >>> x = lg.coordinates("x"); m, k = lg.parameters("m k")
@@ -218,8 +308,8 @@ def declaration_key(system) -> str | None:
     >>> declaration_key(a) == declaration_key(b)
     False
     """
-    text = _text(_declaration(system))
-    return None if text is None else _digest("derived", text, environment())
+    content = _fingerprint(_declaration(system))
+    return None if content is None else _digest("derived", _KEY_FORMAT, content, environment())
 
 
 _FINGERPRINTS: dict[int, tuple[weakref.ref, str | None]] = {}
@@ -233,7 +323,8 @@ def _remember(eqs: Equations, fingerprint: str | None) -> str | None:
 
 
 def equations_fingerprint(eqs: Equations) -> str | None:
-    """SHA-256 of the ``srepr`` of every field of ``eqs`` (None when it holds an unknown sympy class).
+    """SHA-256 of the hash tree (:class:`_KeyHasher`) of every field of ``eqs`` (None when it holds an unknown
+    sympy class).
 
     Memoized per object; equations derived or loaded by :func:`cached_equations` come with the fingerprint
     of their entry (a digest of the declaration key), so they are never printed.
@@ -242,8 +333,8 @@ def equations_fingerprint(eqs: Equations) -> str | None:
     if known is not None and known[0]() is eqs:
         return known[1]
     identity = getattr(eqs, "_identity", None)  # structural equations: without deriving their expanded fields
-    text = _text(identity() if identity else tuple((f.name, getattr(eqs, f.name)) for f in fields(eqs)))
-    return _remember(eqs, None if text is None else _digest("equations", text))
+    content = _fingerprint(identity() if identity else tuple((f.name, getattr(eqs, f.name)) for f in fields(eqs)))
+    return _remember(eqs, None if content is None else _digest("equations", _KEY_FORMAT, content))
 
 
 def _entry_path(kind: str, key: str, suffix: str) -> Path | None:
