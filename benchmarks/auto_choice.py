@@ -15,21 +15,21 @@ loop. Times are CPU (``time.process_time``) and wall (``time.perf_counter``).
   taylor, DOP853, RK45, LSODA, Radau, BDF (a later method there may profit from an earlier one's first use —
   scipy's, the generated Jacobian — which can only make the best other method look faster). The first trial
   runs every method; later trials only the methods whose first call was within 3× of the fastest (the
-  others cannot be the best). The figure is the median over the trials (``--trials``; 2 in the full run).
+  others cannot be the best). The figure is the median over the trials (``--trials``; 3 in the full run).
   Auto's first call includes its own first-use costs and those of the method it picks.
 * **median** — in the main process, interleaved rounds (auto, taylor, DOP853, …; each round starts one method
   later, so no method always runs right after the same one): the median CPU and wall time of rounds 1…R
-  (round 0 gives the error and auto's label, and is not timed). A method whose first call exceeds 3 s CPU is
-  not repeated; one whose repeats have cost 10 s CPU stops after 3.
+  (round 0 is not timed). A method whose first call exceeds 3 s CPU is not repeated; one whose repeats have
+  cost 10 s CPU stops after 3.
 * **decision** — :func:`lagrange.integrate.auto.choose` alone (finite differences, bound or eigenvalues,
   choice; model already built): median CPU of 21 calls, and its share of auto's median run.
-* **error** — max-norm of the state error at the problem's measurement times against its closed form or a
-  tight reference (the problem's reference method at rtol 1e-12 / 1e-13).
+* **error** — of the first call in the first trial: max-norm of the state error at the problem's measurement
+  times against its closed form or a tight reference (the problem's reference method at rtol 1e-12 / 1e-13).
 
 Writes ``benchmarks/results/auto_choice.md``. Run::
 
-    python benchmarks/auto_choice.py            # full: rtol 1e-6 and 1e-9, 2 trials, 11 rounds, + nlink10
-    python benchmarks/auto_choice.py --quick    # short horizons, rtol 1e-9, 1 trial, 5 rounds, auto/taylor/DOP853
+    python benchmarks/auto_choice.py            # full: rtol 1e-6 and 1e-9, 3 trials, 21 rounds, + nlink10
+    python benchmarks/auto_choice.py --quick    # short horizons, rtol 1e-9, 1 trial, 7 rounds, auto/taylor/DOP853
 """
 
 from __future__ import annotations
@@ -89,14 +89,14 @@ def _run(system, problem, method, rtol, times, t_end=None):
 
 def _first_calls(system, problem, methods, tolerances, times) -> dict:
     """In a child process: warm the shared first-use costs with a short RK23 run, then the first call of each
-    method at each tolerance: ``{"method|rtol": [cpu, wall] or "refused: ..."}``."""
+    method at each tolerance: ``{"method|rtol": [cpu, wall, y at the measurement times, label] or "refused: ..."}``."""
     _run(system, problem, "RK23", 1e-6, None, t_end=problem.t_end * 1e-3)
     out = {}
     for rtol in tolerances:
         for m in methods:
             try:
-                _, cpu, wall = _clock(lambda m=m, rtol=rtol: _run(system, problem, m, rtol, times))
-                out[f"{m}|{rtol!r}"] = [cpu, wall]
+                sol, cpu, wall = _clock(lambda m=m, rtol=rtol: _run(system, problem, m, rtol, times))
+                out[f"{m}|{rtol!r}"] = [cpu, wall, sol.y.tolist(), sol.method]
             except LagrangeError as exc:
                 out[f"{m}|{rtol!r}"] = f"refused: {type(exc).__name__}"
     return out
@@ -181,18 +181,20 @@ def bench_problem(name: str, *, quick: bool, tolerances, rounds: int, trials: in
         stats = {m: {"first": _median_pair(first.get(f"{m}|{rtol!r}", [])), "trials": len(first.get(
             f"{m}|{rtol!r}", [])), "cpu": [], "wall": [], "error": None, "label": "",
             "refused": refused.get(f"{m}|{rtol!r}", "")} for m in ("auto",) + others}
-        for rep in range(rounds + 1):
-            k = rep % len(methods)  # each round starts one method later: no method always follows the same one
-            for m in methods[k:] + methods[:k]:
+        for m in methods:  # error and label of the first call (the first trial's)
+            got = first.get(f"{m}|{rtol!r}")
+            if got:
+                stats[m]["error"] = float(np.max(np.abs(np.array(got[0][2]) - ref)))
+                stats[m]["label"] = got[0][3]
+        repeated = tuple(m for m in methods if stats[m]["first"] is not None and stats[m]["first"][0] <= SLOW_FIRST)
+        for rep in range(rounds + 1):  # round 0: each method's first use in this process, not timed
+            k = rep % len(repeated)  # each round starts one method later: no method always follows the same one
+            for m in repeated[k:] + repeated[:k]:
                 s = stats[m]
-                if rep and (s["first"] is None or s["first"][0] > SLOW_FIRST
-                            or (len(s["cpu"]) >= 3 and sum(s["cpu"]) > ROUND_BUDGET)):
+                if len(s["cpu"]) >= 3 and sum(s["cpu"]) > ROUND_BUDGET:
                     continue
-                sol, cpu, wall = _clock(lambda m=m, rtol=rtol: _run(system, problem, m, rtol, times))
-                if rep == 0:
-                    s["error"] = float(np.max(np.abs(sol.y - ref)))
-                    s["label"] = sol.method
-                else:
+                _, cpu, wall = _clock(lambda m=m, rtol=rtol: _run(system, problem, m, rtol, times))
+                if rep:
                     s["cpu"].append(cpu)
                     s["wall"].append(wall)
         decision, choice = _decision(system, problem, rtol)
@@ -202,7 +204,7 @@ def bench_problem(name: str, *, quick: bool, tolerances, rounds: int, trials: in
     return rows
 
 
-def _median_pair(samples: list) -> tuple[float, float] | None:
+def _median_pair(samples: list) -> tuple[float, float] | None:  # samples: [cpu, wall, ...] per trial
     if not samples:
         return None
     return statistics.median(s[0] for s in samples), statistics.median(s[1] for s in samples)
@@ -296,8 +298,8 @@ def main() -> None:
     if not args.quick and not args.problem:
         names.append("nlink10")
     tolerances = (1e-9,) if args.quick else (1e-6, 1e-9)
-    trials = args.trials or (1 if args.quick else 2)
-    rounds = args.rounds or (5 if args.quick else 11)
+    trials = args.trials or (1 if args.quick else 3)
+    rounds = args.rounds or (7 if args.quick else 21)
     t0 = time.perf_counter()
     rows = [r for n in names for r in bench_problem(n, quick=args.quick, tolerances=tolerances, rounds=rounds,
                                                    trials=trials)]
