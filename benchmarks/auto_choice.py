@@ -7,20 +7,18 @@ request (a method that refuses it is listed as refused; RK23 and heyoka are left
 loop. Times are CPU (``time.process_time``) and wall (``time.perf_counter``).
 
 * **first call** — the first run of the method in a process, measured in a fresh python process (this script
-  with ``--child``) in which no other method has run before it: ``import``, the derivation, the python code
-  generation, the Taylor tape and loading the C interpreter are done first and not counted; the
-  child then warms what every method shares with one short RK23 run (``t_end/1000``: option checks, the
-  initial state, the python model, the Trajectory; not counted) and times the first call at each tolerance
-  in turn. Two children per trial: one runs ``auto`` alone, the other every other method in the order
-  taylor, DOP853, RK45, LSODA, Radau, BDF (a later method there may profit from an earlier one's first use —
-  scipy's, the generated Jacobian — which can only make the best other method look faster). The first trial
-  runs every method; later trials only the methods whose first call was within 3× of the fastest (the
-  others cannot be the best). The figure is the median over the trials (``--trials``; 3 in the full run).
+  with ``--child``) in which no method has run before it: ``import``, the derivation, the python code
+  generation, the Taylor tape and loading the C interpreter are done first and not counted; the child then
+  warms what every method shares with one short RK23 run (``t_end/1000``: option checks, the initial state,
+  the python model, the Trajectory; not counted) and times the first call at each tolerance in turn. A survey
+  child first runs every other method (taylor, DOP853, RK45, LSODA, Radau, BDF) one after the other: the
+  methods whose first call there is within 3× of the fastest are the contenders; then ``auto`` and each
+  contender run alone in their own child, ``--trials`` times (3 in the full run), and the figure is the median
+  of those solo trials. The other methods (which cannot be the best) show their survey figure (trials 0).
   Auto's first call includes its own first-use costs and those of the method it picks.
-* **median** — in the main process, interleaved rounds (auto, taylor, DOP853, …; each round starts one method
-  later, so no method always runs right after the same one): the median CPU and wall time of rounds 1…R
-  (round 0 is not timed). A method whose first call exceeds 3 s CPU is not repeated; one whose repeats have
-  cost 10 s CPU stops after 3.
+* **median** — in the main process, interleaved rounds of auto and the contenders (each round starts one
+  method later, so no method always runs right after the same one): the median CPU and wall time of rounds
+  1…R (round 0 is not timed); a method whose repeats have cost 5 s CPU stops after 3.
 * **decision** — :func:`lagrange.integrate.auto.choose` alone (finite differences, bound or eigenvalues,
   choice; model already built): median CPU of 21 calls, and its share of auto's median run.
 * **error** — of the first call in the first trial: max-norm of the state error at the problem's measurement
@@ -55,13 +53,11 @@ from lagrange.integrate.registry import METHODS
 from lagrange.integrate.run import _needs, simulate
 
 RESULTS = Path(__file__).parent / "results"
-OTHERS = tuple(m.name for m in METHODS if m.adaptive and m.name not in ("heyoka", "RK23"))
+OTHERS = ("taylor",) + tuple(m.name for m in METHODS if m.adaptive and m.name not in ("heyoka", "RK23", "taylor"))
 #: --quick: auto and the methods it picks on these problems (LSODA too on the stiff one)
 QUICK_OTHERS = ("taylor", "DOP853")
-#: a method whose first call takes longer (CPU seconds) is not repeated
-SLOW_FIRST = 3.0
 #: a method stops repeating after 3 rounds once its repeats have cost this much CPU (seconds)
-ROUND_BUDGET = 10.0
+ROUND_BUDGET = 5.0
 #: later first-call trials only for methods whose first call was within this factor of the fastest
 CONTENDER = 3.0
 
@@ -157,36 +153,44 @@ def bench_problem(name: str, *, quick: bool, tolerances, rounds: int, trials: in
     except LagrangeError:
         pass
     times = problem.times()
-    # first calls: fresh child processes (this one has not run any method yet either)
-    first: dict[str, list] = {}
+    # first calls: fresh child processes (this one has not run any method yet either). Trial 0: every other
+    # method in one child (which could be the best, their errors, the first calls of the rest); then each
+    # contender and auto alone in its own child, `trials` times.
+    survey: dict[str, list] = {}
     refused: dict[str, str] = {}
-    contenders = {rtol: list(others) for rtol in tolerances}
-    for trial in range(trials):
-        groups = [["auto"], sorted({m for r in tolerances for m in contenders[r]}, key=others.index)]
-        for group in groups:
-            for key, value in _child(name, group, tolerances, quick).items():
+    for key, value in _child(name, list(others), tolerances, quick).items():
+        if isinstance(value, str):
+            refused[key] = value
+        else:
+            survey[key] = value
+    contenders = set()
+    for rtol in tolerances:
+        ran = {m: survey[f"{m}|{rtol!r}"][0] for m in others if f"{m}|{rtol!r}" in survey}
+        fastest = min(ran.values(), default=0.0)
+        contenders |= {m for m in ran if ran[m] <= CONTENDER * fastest}
+    solo = ["auto"] + [m for m in others if m in contenders]
+    first: dict[str, list] = {}
+    for _trial in range(trials):
+        for m in solo:
+            for key, value in _child(name, [m], tolerances, quick).items():
                 if isinstance(value, str):
                     refused[key] = value
                 else:
                     first.setdefault(key, []).append(value)
-        if trial == 0:
-            for rtol in tolerances:
-                ran = {m: first[f"{m}|{rtol!r}"][0][0] for m in others if f"{m}|{rtol!r}" in first}
-                fastest = min(ran.values(), default=0.0)
-                contenders[rtol] = [m for m in others if m in ran and ran[m] <= CONTENDER * fastest]
     ref = _reference(problem, system, times)
     rows = []
     for rtol in tolerances:
-        methods = ("auto",) + tuple(m for m in others if f"{m}|{rtol!r}" not in refused)
-        stats = {m: {"first": _median_pair(first.get(f"{m}|{rtol!r}", [])), "trials": len(first.get(
-            f"{m}|{rtol!r}", [])), "cpu": [], "wall": [], "error": None, "label": "",
-            "refused": refused.get(f"{m}|{rtol!r}", "")} for m in ("auto",) + others}
-        for m in methods:  # error and label of the first call (the first trial's)
-            got = first.get(f"{m}|{rtol!r}")
-            if got:
-                stats[m]["error"] = float(np.max(np.abs(np.array(got[0][2]) - ref)))
-                stats[m]["label"] = got[0][3]
-        repeated = tuple(m for m in methods if stats[m]["first"] is not None and stats[m]["first"][0] <= SLOW_FIRST)
+        methods = tuple(m for m in solo if f"{m}|{rtol!r}" not in refused)
+        stats = {}
+        for m in ("auto",) + others:
+            key = f"{m}|{rtol!r}"
+            samples = first.get(key) or ([survey[key]] if key in survey else [])
+            stats[m] = {"first": _median_pair(samples), "trials": len(first.get(key, [])), "cpu": [], "wall": [],
+                        "error": None, "label": "", "refused": refused.get(key, "")}
+            if samples:  # error and label of the first call (the first sample's)
+                stats[m]["error"] = float(np.max(np.abs(np.array(samples[0][2]) - ref)))
+                stats[m]["label"] = samples[0][3]
+        repeated = methods
         for rep in range(rounds + 1):  # round 0: each method's first use in this process, not timed
             k = rep % len(repeated)  # each round starts one method later: no method always follows the same one
             for m in repeated[k:] + repeated[:k]:
@@ -313,13 +317,13 @@ def main() -> None:
         "scale. CPU = `time.process_time` of the process that ran the call; wall = `time.perf_counter`.", "",
         "What is counted: **first call** = the first `simulate` of that method in a fresh python process, after the "
         "shared setup (imports, derivation, python code generation, Taylor tape, C interpreter loaded: not "
-        "counted) and after one short RK23 run that warms what every method shares (not counted); auto runs "
-        "alone in its child, the other methods one after the other in another child (taylor first); median over "
-        "the trials. Each method's own first-use costs are in its first call (auto's include those of the method "
-        "it picks). **Median** = interleaved rounds in one process (auto, taylor, DOP853, …, each round starting "
-        f"one method later), round 0 not timed. A method whose first call exceeds {SLOW_FIRST:g} s CPU is not "
-        f"repeated, one whose repeats cost {ROUND_BUDGET:g} s CPU stops after 3; later first-call trials "
-        f"only for methods within {CONTENDER:g}× of the fastest first call. **Decision** = "
+        "counted) and one short RK23 run that warms what every method shares (not counted). A survey process runs "
+        f"every other method in turn; those within {CONTENDER:g}× of the fastest first call there are the "
+        "contenders; auto and each contender then run alone in their own fresh process, once per trial: median "
+        "of the trials (trials 0 = the survey figure, for methods that cannot be the best). Each method's own "
+        "first-use costs are in its first call (auto's include those of the method it picks). **Median** = "
+        "interleaved rounds of auto and the contenders in one process, each round starting one method later, "
+        f"round 0 not timed; a method whose repeats cost {ROUND_BUDGET:g} s CPU stops after 3. **Decision** = "
         "`lagrange.integrate.auto.choose` alone on a built model (median of 21 calls).", "",
         "## Summary", "", _summary(rows), "", "## Per problem", "", _table(rows)])
     Path(args.out).write_text(text)
