@@ -13,8 +13,9 @@ loop. Times are CPU (``time.process_time``) and wall (``time.perf_counter``).
   the python model, the Trajectory; not counted) and times the first call at each tolerance in turn. A survey
   child first runs every other method (taylor, DOP853, RK45, LSODA, Radau, BDF) one after the other: the
   methods whose first call there is within 3× of the fastest are the contenders; then ``auto`` and each
-  contender run alone in their own child, ``--trials`` times (3 in the full run), and the figure is the median
-  of those solo trials. The other methods (which cannot be the best) show their survey figure (trials 0).
+  contender run alone in their own child, ``--trials`` times (5 in the full run), and the figure is the median
+  of those solo trials (the ratio of the fastest trials is given too: noise on this shared machine only slows
+  a run down). The other methods (which cannot be the best) show their survey figure (trials 0).
   Auto's first call includes its own first-use costs and those of the method it picks.
 * **median** — in the main process, interleaved rounds of auto and the contenders (each round starts one
   method later, so no method always runs right after the same one): the median CPU and wall time of rounds
@@ -24,9 +25,9 @@ loop. Times are CPU (``time.process_time``) and wall (``time.perf_counter``).
 * **error** — of the first call in the first trial: max-norm of the state error at the problem's measurement
   times against its closed form or a tight reference (the problem's reference method at rtol 1e-12 / 1e-13).
 
-Writes ``benchmarks/results/auto_choice.md``. Run::
+Writes ``benchmarks/results/auto_choice.md`` and every sample to ``auto_choice.json``. Run::
 
-    python benchmarks/auto_choice.py            # full: rtol 1e-6 and 1e-9, 3 trials, 21 rounds, + nlink10
+    python benchmarks/auto_choice.py            # full: rtol 1e-6 and 1e-9, 5 trials, 21 rounds, + nlink10
     python benchmarks/auto_choice.py --quick    # short horizons, rtol 1e-9, 1 trial, 7 rounds, auto/taylor/DOP853
 """
 
@@ -186,7 +187,8 @@ def bench_problem(name: str, *, quick: bool, tolerances, rounds: int, trials: in
             key = f"{m}|{rtol!r}"
             samples = first.get(key) or ([survey[key]] if key in survey else [])
             stats[m] = {"first": _median_pair(samples), "trials": len(first.get(key, [])), "cpu": [], "wall": [],
-                        "error": None, "label": "", "refused": refused.get(key, "")}
+                        "error": None, "label": "", "refused": refused.get(key, ""),
+                        "first_samples": [x[:2] for x in first.get(key, [])]}
             if samples:  # error and label of the first call (the first sample's)
                 stats[m]["error"] = float(np.max(np.abs(np.array(samples[0][2]) - ref)))
                 stats[m]["label"] = samples[0][3]
@@ -225,7 +227,8 @@ def _med(s: dict) -> float | None:
 
 
 def _ratios(r: dict):
-    """(best other by first call, auto first / its first, best other by median, auto median / its median)."""
+    """(best other by first call, auto first / its first, the same for the fastest trials, best other by
+    median, auto median / its median)."""
     st = r["stats"]
     others = {m: s for m, s in st.items() if m != "auto" and s["first"] is not None and not s["refused"]}
     a = st["auto"]
@@ -233,7 +236,9 @@ def _ratios(r: dict):
         return None
     bf = min(others, key=lambda m: others[m]["first"][0])
     bm = min(others, key=lambda m: _med(others[m]))
-    return bf, a["first"][0] / others[bf]["first"][0], bm, _med(a) / _med(others[bm])
+    fastest = (min(x[0] for x in a["first_samples"]) / min(x[0] for x in st[bf]["first_samples"])
+               if a["first_samples"] and st[bf]["first_samples"] else float("nan"))
+    return bf, a["first"][0] / others[bf]["first"][0], fastest, bm, _med(a) / _med(others[bm])
 
 
 def _table(rows: list[dict]) -> str:
@@ -248,8 +253,9 @@ def _table(rows: list[dict]) -> str:
                 f"{_fmt(r['setup_cpu'])} CPU, not counted", ""]
         ratios = _ratios(r)
         if ratios:
-            bf, rf, bm, rm = ratios
-            out += [f"auto / best other, CPU: first call ×{rf:.2f} (best: {bf}), median ×{rm:.2f} (best: {bm})", ""]
+            bf, rf, rfast, bm, rm = ratios
+            out += [f"auto / best other, CPU: first call ×{rf:.2f} (fastest trials ×{rfast:.2f}; best: {bf}), "
+                    f"median ×{rm:.2f} (best: {bm})", ""]
         out += [f"auto's label: `{a['label']}`", "",
                 "| method | first call CPU | first call wall | trials | median CPU | median wall | error |",
                 "|---|---|---|---|---|---|---|"]
@@ -269,18 +275,19 @@ def _table(rows: list[dict]) -> str:
 
 
 def _summary(rows: list[dict]) -> str:
-    lines = ["| problem | rtol | auto's choice | decision CPU (share of auto's run) | auto first / best first (CPU) "
-             "| best first | auto median / best median (CPU) | best median | auto error | best's error |",
-             "|---|---|---|---|---|---|---|---|---|---|"]
+    lines = ["| problem | rtol | auto's choice | decision CPU (share of auto's run) | auto first / best first (CPU; "
+             "median of trials) | fastest trial / fastest trial | best first | auto median / best median (CPU) | "
+             "best median | auto error | best's error |",
+             "|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in rows:
         ratios = _ratios(r)
         if not ratios:
             continue
-        bf, rf, bm, rm = ratios
+        bf, rf, rfast, bm, rm = ratios
         a = r["stats"]["auto"]
         lines.append(f"| {r['problem']} | {r['rtol']:g} | {a['label'].split(' ')[0]} | {_fmt(r['decision_cpu'])} "
-                     f"({100 * r['decision_cpu'] / _med(a):.1f} %) | ×{rf:.2f} | {bf} | ×{rm:.2f} | {bm} | "
-                     f"{a['error']:.1e} | {r['stats'][bf]['error']:.1e} |")
+                     f"({100 * r['decision_cpu'] / _med(a):.1f} %) | ×{rf:.2f} | ×{rfast:.2f} | {bf} | ×{rm:.2f} | "
+                     f"{bm} | {a['error']:.1e} | {r['stats'][bf]['error']:.1e} |")
     return "\n".join(lines)
 
 
@@ -302,7 +309,7 @@ def main() -> None:
     if not args.quick and not args.problem:
         names.append("nlink10")
     tolerances = (1e-9,) if args.quick else (1e-6, 1e-9)
-    trials = args.trials or (1 if args.quick else 3)
+    trials = args.trials or (1 if args.quick else 5)
     rounds = args.rounds or (7 if args.quick else 21)
     t0 = time.perf_counter()
     rows = [r for n in names for r in bench_problem(n, quick=args.quick, tolerances=tolerances, rounds=rounds,
@@ -327,6 +334,7 @@ def main() -> None:
         "`lagrange.integrate.auto.choose` alone on a built model (median of 21 calls).", "",
         "## Summary", "", _summary(rows), "", "## Per problem", "", _table(rows)])
     Path(args.out).write_text(text)
+    Path(args.out).with_suffix(".json").write_text(json.dumps(rows, indent=1))  # every sample
     print(_summary(rows))
 
 
