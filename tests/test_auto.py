@@ -183,3 +183,120 @@ def test_friction_switches_and_events_run_on_a_method_that_supports_them():
                      events=[crossing])
     assert sol.method.startswith("DOP853") and "auto:" in sol.method
     assert np.max(np.abs(sol.y - belt_state(tt))) < 1e-7
+
+
+# --- the cheap decision: 2n + 1 evaluations, a bound before eigenvalues, one model ----------------------
+def _counting(fun):
+    calls = []
+
+    def counted(t_, y):
+        calls.append(np.array(y))
+        return fun(t_, y)
+
+    return counted, calls
+
+
+def test_difference_jacobian_of_analytic_equations_takes_2n_plus_1_evaluations():
+    A = np.array([[0.0, 0.0, 1.0, 0.0], [0.0, 0.0, 0.0, 1.0], [-3.0, 1.0, -0.2, 0.1], [1.0, -2.0, 0.1, -0.3]])
+    fun, calls = _counting(lambda t_, y: list(A @ y))  # a list, as the generated python rhs returns
+    J, seconds = auto.difference_jacobian(fun, 0.0, np.array([0.3, -0.2, 0.1, 0.5]), smooth=True)
+    assert len(calls) == 2 * 2 + 1 and seconds >= 0
+    assert np.allclose(J, A, atol=1e-6)
+    fun, calls = _counting(lambda t_, y: A @ y)
+    assert np.allclose(auto.difference_jacobian(fun, 0.0, np.zeros(4))[0], A, atol=1e-6)
+    assert len(calls) == 4 * 2 + 1  # not known to be smooth: every column checked for a jump
+
+
+def test_difference_jacobian_keeps_the_jump_check_for_non_analytic_equations():
+    def f(t_, y):
+        return np.array([y[1], -y[0] - 0.5 * np.sign(y[1])])
+
+    J, _ = auto.difference_jacobian(f, 0.0, np.array([1.0, 0.0]))
+    assert np.allclose(J, [[0.0, 1.0], [-1.0, 0.0]], atol=1e-6)  # not the 1/h jump of sign(v) at v = 0
+
+
+@pytest.mark.parametrize("size", [2, 4, 8, 12, 14, 20, 40])
+def test_decay_bound_is_an_upper_bound_of_the_fastest_decay_rate(size):
+    """Gershgorin on the balanced matrix (plain-Python path up to 12 states, numpy beyond): never below the
+    eigenvalues' max(−Re λ), on random matrices with rows of very different scales."""
+    rng = np.random.default_rng(size)
+    for _ in range(40):
+        J = rng.normal(size=(size, size)) * rng.uniform(1e-2, 1e3, size=(size, 1))
+        decay = max(0.0, float(np.max(-np.linalg.eigvals(J).real)))
+        assert auto.decay_bound(J) >= decay * (1 - 1e-12)
+
+
+def test_decay_bound_is_tight_for_oscillators():
+    """An undamped oscillator of frequency ω: bound ω (the balancing), not ω²; with damping c: ≤ ω + c."""
+    for omega in (0.5, 3.0, 100.0):
+        J = np.array([[0.0, 1.0], [-omega**2, 0.0]])
+        assert auto.decay_bound(J) == pytest.approx(omega, rel=1e-12)
+        damped = np.array([[0.0, 1.0], [-omega**2, -2.0]])
+        decay = float(np.max(-np.linalg.eigvals(damped).real))
+        assert decay <= auto.decay_bound(damped) <= omega + 2.0 + 1e-12
+
+
+def test_non_stiff_choice_computes_no_eigenvalues(monkeypatch):
+    """When the bound × horizon ≤ 10³ the eigenvalues are not needed; the reason gives the bound."""
+    def refuse(*args):
+        raise AssertionError("eigenvalues computed")
+
+    monkeypatch.setattr(auto.np.linalg, "eigvals", refuse)
+    s, x = _damped()
+    sol = s.simulate(10, {x: 1.0, x.diff(t): 0.0}, {"m": 1, "k": 4, "c": 0.1}, method="auto", t_eval=[10.0])
+    assert "decay rates ≤ 2.1/time over 10: not stiff" in sol.method  # ω = 2, c = 0.1
+    exact = np.exp(-0.05 * 10) * (np.cos(np.sqrt(3.9975) * 10) + 0.05 / np.sqrt(3.9975) * np.sin(np.sqrt(3.9975) * 10))
+    assert abs(sol["x"][-1] - exact) < 1e-7
+
+
+def test_bound_does_not_hide_stiffness():
+    """The same system with c = 10⁴: the bound exceeds 10³ / T, the eigenvalues decide, and it is stiff."""
+    s, x = _damped()
+    sol = s.simulate(1, {x: 1.0, x.diff(t): 0.0}, {"m": 1, "k": 1, "c": 1e4}, method="auto", t_eval=[1.0],
+                     rtol=1e-8, atol=1e-10)
+    assert "auto: stiff" in sol.method and sol.method.split(" ")[0] in ("taylor", "LSODA")
+    assert abs(sol["x"][-1] - _overdamped_exact(np.array([1.0]), 1e4)[0]) < 1e-7
+
+
+def test_auto_builds_one_model_and_binds_its_parameters_once(monkeypatch):
+    """The python model built to decide is the run's model: one code generation, no second binding; the result
+    is the chosen method's, number for number."""
+    from lagrange.codegen.numeric import NumericModel
+
+    s, x = _damped()
+    ic, p = {x: 1.0, x.diff(t): 0.0}, {"m": 1, "k": 4, "c": 0.3}
+    direct = s.simulate(3, ic, p, method="taylor" if HAS_C else "DOP853", t_eval=[1.0, 3.0])
+    builds = []
+    real_build = NumericModel.build
+
+    def build(*args, **kwargs):
+        builds.append(args)
+        return real_build(*args, **kwargs)
+
+    def rebind(self, params):
+        raise AssertionError("parameters bound a second time")
+
+    monkeypatch.setattr(NumericModel, "build", staticmethod(build))
+    monkeypatch.setattr(NumericModel, "with_params", rebind)
+    sol = s.simulate(3, ic, p, method="auto", t_eval=[1.0, 3.0])
+    assert len(builds) == 1
+    assert sol.method.split(" ")[0] == direct.method.split(" ")[0]
+    assert np.array_equal(sol.y, direct.y)
+
+
+def test_auto_with_baumgarte_still_compiles_the_stabilized_model():
+    """A stiff constrained run on LSODA (no projection: Baumgarte) must not reuse the unstabilized model built
+    to decide: the result is LSODA's with Baumgarte stabilization, number for number, and the constraint holds."""
+    x, y = coordinates("x y")
+    m, g, l, c = parameters("m g l c")
+    s = System([x, y], bodies=[Particle(m, (x, y))], V=m * g * y,
+               rayleigh=c * (x.diff(t) ** 2 + y.diff(t) ** 2) / 2,
+               constraints=[Holonomic(sp.sqrt(x**2 + y**2) - l, "string")])
+    args = (2, {x: 1.0, y: 0.0, x.diff(t): 0.0, y.diff(t): 0.0}, {"m": 1, "g": 9.81, "l": 1, "c": 1e4})
+    opts = dict(rtol=1e-8, atol=1e-10, stabilization="baumgarte", t_eval=np.linspace(0, 2, 5))
+    sol = s.simulate(*args, method="auto", **opts)
+    assert sol.method.startswith("LSODA") and "auto: stiff" in sol.method
+    direct = s.simulate(*args, method="LSODA", **opts)
+    assert np.array_equal(sol.y, direct.y)
+    assert np.max(np.abs(np.hypot(sol["x"], sol["y"]) - 1.0)) < 1e-5
+    assert np.all(np.diff(sol["y"]) <= 1e-9)  # overdamped: the bob creeps down along the circle

@@ -1,17 +1,22 @@
 r"""``method="auto"``: choose an adaptive method of the registry from cheap numerical estimates.
 
-The decision costs a few right-hand-side evaluations of the compiled model (which the run builds anyway, and
-which :func:`lagrange.codegen.numeric.NumericModel.build` keeps in memory): no symbolic Jacobian is built to
-test stiffness.
+The decision costs 2n + 1 evaluations of the compiled right-hand side (the model the run uses: ``simulate``
+hands the model it built to decide on to the run, parameters bound once) and a few microseconds of
+arithmetic; no symbolic Jacobian is built to test stiffness, and eigenvalues are computed only when a cheap
+bound cannot rule stiffness out (``benchmarks/auto_choice.py`` measures the decision against the runs).
 
 1. **Candidates.** Only the adaptive methods of :data:`~lagrange.integrate.registry.METHODS` whose entry covers
    everything the request needs (events, holonomic and non-holonomic constraints, friction switches, rough
    constraints, constant or time-varying inputs, dense output) are considered; the Taylor method also needs
    analytic unconstrained equations and a tape interpreter (:func:`~lagrange.integrate.taylor_run.taylor_ready`).
 2. **Stiffness estimate.** The Jacobian :math:`J = \partial f/\partial y` of the compiled right-hand side at
-   the initial state by finite differences (:func:`estimate_stiffness`: forward and backward differences, the
-   smaller one kept across a ``sign()`` switch), then its eigenvalues :math:`\lambda`: the fastest decay rate
-   :math:`\mu = \max(-\operatorname{Re}\lambda)` and the stiffness ratio :math:`\mu / \min|\lambda \ne 0|`.
+   the initial state by forward differences (:func:`difference_jacobian`: 2n + 1 evaluations; when the
+   equations are not known to be analytic — no Taylor tape — each column is checked against a ``sign()``
+   switch at the state, and across one the smaller one-sided difference is kept). First a bound
+   (:func:`decay_bound`, Gershgorin's discs of the block-balanced :math:`J`) on the fastest decay rate
+   :math:`\mu = \max(-\operatorname{Re}\lambda)`: when :math:`\text{bound} \cdot T \le 10^3` the problem is not
+   stiff and no eigenvalue is computed. Otherwise the eigenvalues :math:`\lambda` of :math:`J`
+   (:func:`estimate_stiffness`): :math:`\mu` and the stiffness ratio :math:`\mu / \min|\lambda \ne 0|`.
    The problem is *stiff for explicit methods* when :math:`\mu T > 10^3` and the ratio exceeds :math:`10^3`
    (:math:`T` the horizon): an explicit Runge–Kutta method then takes about :math:`\mu T / 3` steps whatever
    the tolerance.
@@ -40,17 +45,20 @@ import math
 import time
 from collections.abc import Callable
 from dataclasses import dataclass
+from functools import lru_cache
 
 import numpy as np
 
 from ..errors import LagrangeError
 from . import registry
 
-__all__ = ["Stiffness", "estimate_stiffness", "taylor_seconds", "implicit_seconds", "candidates", "choose"]
+__all__ = ["Stiffness", "estimate_stiffness", "difference_jacobian", "decay_bound", "taylor_seconds",
+           "implicit_seconds", "candidates", "choose"]
 
 #: μ T above which explicit methods are stability-limited, and the stiffness ratio above which this is stiffness
 STIFF_STEPS = 1e3
 STIFF_RATIO = 1e3
+_SQRT_EPS = math.sqrt(float(np.finfo(float).eps))
 #: eigenvalues below this fraction of the spectral radius are not resolved by the finite differences
 RESOLUTION = 1e-8
 #: seconds per tape instruction per Taylor pass at order 12 (C interpreter; measured, benchmarks/auto_choice.py)
@@ -83,14 +91,13 @@ class Stiffness:
         return self.decay * horizon > STIFF_STEPS and self.ratio > STIFF_RATIO
 
 
-def estimate_stiffness(fun: Callable, t0: float, y0: np.ndarray) -> Stiffness | None:
+def estimate_stiffness(fun: Callable, t0: float, y0: np.ndarray, *, smooth: bool = False) -> Stiffness | None:
     r"""Eigenvalues of the finite-difference Jacobian of ``fun(t, y) -> (2n,)`` at ``(t0, y0)``.
 
     Column :math:`j` is the forward difference :math:`(f(y + h e_j) − f(y))/h` with
-    :math:`h = \sqrt{\varepsilon}\max(1, |y_j|)`, checked against the forward difference over :math:`2h`; where
-    they disagree (a ``sign()`` switch at ``y``, which would read as a huge rate) the differences on each side
-    of the switch, the smaller one kept. 4n + 1 evaluations (two more per switched column). Eigenvalues below 1e-8 × the
-    spectral radius are not resolved: the stiffness ratio is at most 1e8.
+    :math:`h = \sqrt{\varepsilon}\max(1, |y_j|)` (:func:`difference_jacobian`; with ``smooth=False`` checked
+    against a ``sign()`` switch at ``y``). Eigenvalues below 1e-8 × the spectral radius are not resolved: the
+    stiffness ratio is at most 1e8.
 
     Returns None when ``fun`` fails (singular mass matrix, a domain error) or gives non-finite values: the
     caller then decides without the estimate and the run reports the fault.
@@ -99,15 +106,14 @@ def estimate_stiffness(fun: Callable, t0: float, y0: np.ndarray) -> Stiffness | 
     >>> round(st.decay), round(st.ratio)
     (990, 98)
     """
-    y0 = np.asarray(y0, dtype=float)
-    start = time.perf_counter()
+    found = difference_jacobian(fun, t0, y0, smooth=smooth)
+    return None if found is None else _eigen_estimate(*found)
+
+
+def _eigen_estimate(J: np.ndarray, seconds: float) -> Stiffness | None:
     try:
-        J, calls = _jacobian(fun, float(t0), y0)
-        seconds = (time.perf_counter() - start) / calls
-        if not np.all(np.isfinite(J)):
-            return None
         lam = np.linalg.eigvals(J)
-    except (LagrangeError, ArithmeticError, ValueError, TypeError, np.linalg.LinAlgError):
+    except np.linalg.LinAlgError:
         return None
     mags = np.abs(lam)
     radius = float(np.max(mags, initial=0.0))
@@ -117,30 +123,110 @@ def estimate_stiffness(fun: Callable, t0: float, y0: np.ndarray) -> Stiffness | 
     return Stiffness(decay, radius, decay / slow if decay and slow else 1.0, seconds)
 
 
-def _jacobian(fun: Callable, t0: float, y0: np.ndarray) -> tuple[np.ndarray, int]:
-    """The difference Jacobian at ``y0`` and the number of evaluations of ``fun`` it took.
+def difference_jacobian(fun: Callable, t0: float, y0, *, smooth: bool = False
+                        ) -> tuple[np.ndarray, float] | None:
+    r"""``(J, seconds per evaluation)``: the Jacobian :math:`\partial f/\partial y` of ``fun(t, y)`` at
+    ``(t0, y0)`` by forward differences, 2n + 1 evaluations of ``fun`` (one call per column, each with its own
+    state array; ``fun`` may return a list or an array of at least ``y0.size`` values).
 
-    Forward differences with ``h``, checked against forward differences over ``2h``; in a column where they
-    disagree (a jump at ``y0``, e.g. ``sign(v)`` at v = 0, makes difference quotients scale as 1/h) the
-    differences are taken on each side of the jump (between ``y0 ± h`` and ``y0 ± 2h``), the smaller kept."""
+    With ``smooth=False`` (``fun`` may hold ``sign()``/``Abs``) every column is also differenced over ``2h``;
+    where the two disagree (a jump at ``y0``, e.g. ``sign(v)`` at v = 0, makes difference quotients scale as
+    1/h) the differences are taken on each side of the jump (between ``y0 ± h`` and ``y0 ± 2h``), the smaller
+    one kept: 4n + 1 evaluations, two more per switched column. ``smooth=True`` (the equations are analytic:
+    their Taylor tape exists) skips that check.
+
+    Returns None when ``fun`` raises a LagrangeError or an arithmetic error, or gives non-finite values.
+
+    >>> J, _ = difference_jacobian(lambda t, y: [y[1], -4.0 * y[0] - 5.0 * y[1]], 0.0, np.zeros(2))
+    >>> np.round(J, 6).tolist()
+    [[0.0, 1.0], [-4.0, -5.0]]
+    """
+    y0 = np.array(y0, dtype=float)
     size = y0.size
-    h = math.sqrt(np.finfo(float).eps) * np.maximum(1.0, np.abs(y0))
+    t0 = float(t0)
+    steps = [_SQRT_EPS * (v if v > 1.0 else 1.0) for v in np.abs(y0).tolist()]  # plain floats: cheap per column
+    start = time.perf_counter()
+    try:
+        f0 = np.array(fun(t0, y0)[:size], dtype=float)
+        rows = []  # row j: f(y0 + h_j e_j)
+        for j, hj in enumerate(steps):
+            y = y0.copy()
+            y[j] += hj
+            rows.append(fun(t0, y)[:size])
+        calls = 1 + size
+        h = np.array(steps)
+        F = np.array(rows, dtype=float).reshape(size, size)
+        J = ((F - f0) / h[:, None]).T
+        if not smooth:
+            J, extra = _jumps_removed(fun, t0, y0, h, f0, F, J)
+            calls += extra
+    except (LagrangeError, ArithmeticError, ValueError, TypeError):
+        return None
+    seconds = (time.perf_counter() - start) / calls
+    return (J, seconds) if np.isfinite(J).all() else None
+
+
+def _jumps_removed(fun, t0, y0, h, f0, F, J) -> tuple[np.ndarray, int]:
+    """``J`` with each column that jumps at ``y0`` replaced by the smaller one-sided difference, and the number
+    of extra evaluations (see :func:`difference_jacobian`)."""
+    size = y0.size
     E = np.diag(h)
-
-    def values(states) -> np.ndarray:  # row i: f at states[i]
-        return np.array([np.asarray(fun(t0, y), dtype=float)[:size] for y in states]).reshape(len(states), size)
-
-    f0 = values(y0[None, :])[0]
-    fp, f2 = values(y0 + E), values(y0 + 2 * E)
-    J = ((fp - f0) / h[:, None]).T
-    wide = ((f2 - f0) / (2 * h[:, None])).T
+    F2 = np.array([np.asarray(fun(t0, y), dtype=float)[:size] for y in y0 + 2 * E]).reshape(size, size)
+    wide = ((F2 - f0) / (2 * h[:, None])).T
     scale = np.maximum(np.maximum(np.linalg.norm(J, axis=0), np.linalg.norm(wide, axis=0)), 1.0)
     jumps = np.flatnonzero(np.linalg.norm(J - wide, axis=0) > 1e-3 * scale)
-    calls = 1 + 2 * size + 2 * len(jumps)
+    J = J.copy()
     for j in jumps:
-        fm, f_2 = values(np.stack([y0 - E[j], y0 - 2 * E[j]]))
-        J[:, j] = min((f2[j] - fp[j]) / h[j], (fm - f_2) / h[j], key=np.linalg.norm)
-    return J, calls
+        fm = np.asarray(fun(t0, y0 - E[j]), dtype=float)[:size]
+        f_2 = np.asarray(fun(t0, y0 - 2 * E[j]), dtype=float)[:size]
+        J[:, j] = min((F2[j] - F[j]) / h[j], (fm - f_2) / h[j], key=np.linalg.norm)
+    return J, size + 2 * len(jumps)
+
+
+def decay_bound(J: np.ndarray) -> float:
+    r"""An upper bound of the fastest decay rate :math:`\max(-\operatorname{Re}\lambda)` of ``J`` without its
+    eigenvalues: Gershgorin's discs of :math:`D^{-1} J D`, :math:`D = \operatorname{diag}(I, sI)` (the same
+    eigenvalues), :math:`-\operatorname{Re}\lambda \le \max_i (-J'_{ii} + \sum_{j \ne i} |J'_{ij}|)`. For the
+    state :math:`[q, \dot q]` the scale :math:`s = \sqrt{\lVert A\rVert_\infty}` (:math:`A = \partial\ddot q/
+    \partial q`) balances the blocks: an undamped oscillator of frequency ω gets the bound ω, not ω².
+
+    >>> round(decay_bound(np.array([[0.0, 1.0], [-100.0, 0.0]])), 6)
+    10.0
+    """
+    J = np.asarray(J, dtype=float)
+    n2 = J.shape[0]
+    if n2 <= _SMALL:  # a few Python float operations beat a dozen numpy calls on a small matrix
+        return _decay_bound_small(J.tolist())
+    n = n2 // 2
+    absJ = np.abs(J)
+    s = _balance(float(absJ[:n, n:].sum(axis=1).max(initial=0.0)), float(absJ[n:, :n].sum(axis=1).max(initial=0.0)))
+    if s != 1.0:
+        absJ[:n, n:] *= s
+        absJ[n:, :n] /= s
+    diag = np.diagonal(J)
+    radii = absJ.sum(axis=1) - np.abs(diag)
+    return max(float(np.max(radii - diag)), 0.0)
+
+
+#: matrices up to this size are bounded in plain Python (:func:`decay_bound`)
+_SMALL = 12
+
+
+def _balance(top: float, bottom: float) -> float:
+    """The scale s of :func:`decay_bound`: sqrt(‖∂q̈/∂q‖ / ‖∂q̇/∂q̇‖) (1 when either block is zero)."""
+    return math.sqrt(bottom / top) if top > 0 and bottom > 0 else 1.0
+
+
+def _decay_bound_small(rows: list[list[float]]) -> float:
+    n = len(rows) // 2
+    sums = [(sum(map(abs, r[:n])), sum(map(abs, r[n:]))) for r in rows]
+    s = _balance(max((b for _, b in sums[:n]), default=0.0), max((a for a, _ in sums[n:]), default=0.0))
+    best = 0.0
+    for i, (a, b) in enumerate(sums):
+        d = rows[i][i]
+        radius = (a + s * b if i < n else a / s + b) - abs(d)
+        best = max(best, radius - d)
+    return best
 
 
 def taylor_seconds(stiffness: Stiffness, horizon: float, tape_size: int, order: int, *,
@@ -176,8 +262,13 @@ def candidates(needs: dict[str, str]) -> tuple[str, ...]:
     >>> "taylor" in candidates({})
     True
     """
+    return _candidates(frozenset(needs))
+
+
+@lru_cache(maxsize=64)
+def _candidates(features: frozenset) -> tuple[str, ...]:
     return tuple(m.name for m in registry.METHODS
-                 if m.adaptive and m.name != "heyoka" and all(getattr(m, f) for f in needs))
+                 if m.adaptive and m.name != "heyoka" and all(getattr(m, f) for f in features))
 
 
 @dataclass(frozen=True, slots=True)
@@ -213,12 +304,20 @@ def choose(eqs, fun: Callable | None, t0: float, y0, *, t_end: float, rtol: floa
     if not allowed:  # cannot happen with today's table (DOP853 supports everything); refuse by the registry
         registry.check_supported(registry.get("DOP853"), needs)
     ctx = _Context(eqs.n, abs(float(t_end) - float(t0)), float(rtol), backend, projection)
-    stiffness = estimate_stiffness(fun, float(t0), y0) if fun is not None else None
     taylor = _taylor_info(eqs, allowed, ctx)
-    if stiffness is not None and stiffness.is_stiff(ctx.horizon):
-        return _stiff_choice(stiffness, taylor, allowed, ctx)
-    estimate = ("" if stiffness is None else
-                f" (fastest decay {stiffness.decay:.3g}/time over {ctx.horizon:g}: not stiff)")
+    # analytic equations (their tape exists): no sign() jump to look for in the differences
+    found = None if fun is None else difference_jacobian(fun, t0, y0, smooth=taylor is not None)
+    estimate = ""
+    if found is not None:
+        bound = decay_bound(found[0])
+        if bound * ctx.horizon > STIFF_STEPS:  # the bound cannot rule stiffness out: the eigenvalues decide
+            stiffness = _eigen_estimate(*found)
+            if stiffness is not None and stiffness.is_stiff(ctx.horizon):
+                return _stiff_choice(stiffness, taylor, allowed, ctx)
+            if stiffness is not None:
+                estimate = f" (fastest decay {stiffness.decay:.3g}/time over {ctx.horizon:g}: not stiff)"
+        else:
+            estimate = f" (decay rates ≤ {bound:.3g}/time over {ctx.horizon:g}: not stiff)"
     if taylor is not None and (taylor[1] == "c" and backend in ("python", "reference") or ctx.rtol <= 1e-11):
         where = ("steps in the compiled tape interpreter, scipy's DOP853 in Python" if backend != "numba"
                  else "needs fewer operations than DOP853 at this tolerance")

@@ -120,11 +120,14 @@ def check_initial_mass_matrix(system, model: NumericModel, t0: float, y0) -> Non
 
 
 def model_for(eqs, params, model: NumericModel | None, backend: str, baumgarte: tuple | None = None, *,
-              inputs: dict | None = None, schedule=None) -> NumericModel:
+              inputs: dict | None = None, schedule=None, bound: bool = False) -> NumericModel:
     """The model of the run: ``model`` (checked by :func:`check_model`) with ``params`` and the input constants
     ``inputs`` bound BY NAME when it was built for ``eqs`` (and no Baumgarte ``baumgarte=(α, β)`` is asked for),
     else ``eqs`` compiled with those values (and the given model's backend); then the ``schedule`` of the
-    time-varying inputs attached."""
+    time-varying inputs attached. ``bound=True``: ``model`` was built for ``eqs`` with exactly these values
+    (``RunRequest.model_bound``) and is used as it is unless Baumgarte gains are asked for."""
+    if bound and model is not None and model.equations is eqs and not (baumgarte and eqs.m):
+        return model if model.schedule is schedule else model.with_schedule(schedule)
     values = {**dict(params), **(inputs or {})}
     if model is not None and (model.equations is eqs or model.equations == eqs) and not (baumgarte and eqs.m):
         out = model.with_params(values) if values else model
@@ -166,7 +169,8 @@ def constant_input_run(req, route: str) -> tuple[NumericModel, np.ndarray]:
     heyoka): time-varying inputs refused naming ``route``, the model built (or ``req.model`` checked), the
     initial mass matrix checked, the output times (``n_points`` evenly spaced unless ``t_eval`` was given)."""
     refuse_route(route, req.schedule)
-    model = model_for(req.equations, req.params, req.model, req.backend, inputs=req.constants)
+    model = model_for(req.equations, req.params, req.model, req.backend, inputs=req.constants,
+                      bound=req.model_bound)
     t0, t1 = req.t_span
     check_initial_mass_matrix(req.system, model, t0, req.y0)
     t_eval = np.linspace(t0, t1, req.n_points) if req.t_eval is None else req.t_eval

@@ -27,7 +27,9 @@ class RunRequest:
     t_span : ``(t0, t1)`` as floats; ``y0`` the initial state ``[q, q̇]``, shape (2n,); ``initial`` as given
     params : parameter values (the inputs' constants included), ``constants`` those constants, ``schedule`` the
         time-varying inputs (None when all are constant)
-    model : the NumericModel the user passed (checked against the system), or None
+    model : the NumericModel the user passed (checked against the system), or None; with ``model_bound`` the
+        model ``method="auto"`` built to decide, already holding this request's parameters, input constants
+        and schedule (the run uses it as it is: no second binding)
     backend, loop : as given; rtol, atol, max_step, n_points: as given; ``t_eval`` an array or None
     events : the user's event functions (a list)
     switches : the ``sign()`` arguments to integrate with events (empty when regularized or absent)
@@ -57,3 +59,4 @@ class RunRequest:
     friction: FrictionOptions
     stabilization: Stabilization
     step: StepOptions | None
+    model_bound: bool = False

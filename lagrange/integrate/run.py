@@ -195,7 +195,7 @@ def simulate(
     y0 = initial_state(eqs.coordinates, initial)
     params, constants, schedule = split_inputs(eqs, params, inputs, (t0, t1), y0)
     needs = _needs(eqs, events, switches, schedule) | ({"dense_output": ""} if t_eval is not None else {})
-    why = ""
+    why, bound = "", False
     if entry is None:
         decided = _decision_model(eqs, params, model, constants, schedule)
         name, why = auto.choose(eqs, None if decided is None else decided.fun, t0, y0, t_end=t1, rtol=rtol,
@@ -203,7 +203,7 @@ def simulate(
                                 projection=bool(eqs.m) and st.method == "projection")
         entry = registry.get(name)
         if model is None and backend == "python" and loop != "compiled" and decided is not None:
-            model = decided  # the python model the run would build again (the same equations and values)
+            model, bound = decided, True  # the python model the run would build again (same equations and values)
     entry.check_equations(eqs)
     registry.check_supported(entry, needs,
                              conservative=all(Q == 0 for Q in eqs.nonconservative))
@@ -213,7 +213,7 @@ def simulate(
                      initial=initial, params=params, constants=constants, schedule=schedule, model=model,
                      backend=backend, loop=loop, rtol=rtol, atol=atol, max_step=max_step, n_points=int(n_points),
                      t_eval=t_eval, events=events, switches=switches, friction=fr, stabilization=st,
-                     step=step_options)
+                     step=step_options, model_bound=bound)
     return entry.runner()(req)
 
 

@@ -157,7 +157,8 @@ def run(req: RunRequest) -> Trajectory:
     backend = "numba" if use_compiled and req.model is None else req.backend
     notes += [loop_note] if loop_note else []
     gains = (req.stabilization.alpha, req.stabilization.beta) if eqs.m and stabilization == "baumgarte" else None
-    model = model_for(eqs, req.params, req.model, backend, gains, inputs=req.constants, schedule=req.schedule)
+    model = model_for(eqs, req.params, req.model, backend, gains, inputs=req.constants, schedule=req.schedule,
+                      bound=req.model_bound)
     y0 = req.y0
     initial_report = {}
     if eqs.m:
