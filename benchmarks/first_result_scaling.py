@@ -1,15 +1,15 @@
 """Time to first result against the size of the system: planar N-link pendulums, N = 2, 5, 10, 20, 50.
 
-Each route runs in a fresh process with empty caches (:mod:`lagrange.bench.first_result`), side by side in one
-run: lagrange's python backend with DOP853, lagrange's Taylor method with the tape interpreted in C (built by an
-earlier process, as after a first use on the machine; the numba build of the interpreter where there is no C
-compiler), heyoka.py (``heyoka.lagrangian`` + ``taylor_adaptive``, cold LLVM compile, ``compact_mode`` above 100
-operations) and the plain sympy.physics.mechanics route (``LagrangesMethod`` + ``lambdify(cse=True)`` +
-``solve_ivp`` DOP853). All at rtol = atol = 1e-10 over t ∈ [0, 10]; the error is the max-norm of the final state
-against lagrange's Taylor method (C tape) at rtol 1e-15. Interleaved: for each N the routes run one after the
-other (A, B, C, D), and a route whose first result came within a second runs two more rounds (A, B, …, A, B,
-…), median by total. A route that does not finish within the time-out (``--timeout``; ``--sympy-timeout`` for
-the plain sympy route) is stopped and reported as timed out.
+Each route runs in a fresh process with empty caches (:mod:`lagrange.bench.first_result`), side by side in one run:
+lagrange's python backend with DOP853, lagrange's Taylor method with the tape interpreted in C (built by an earlier
+process, as after a first use on the machine; the numba build of the interpreter where there is no C compiler),
+heyoka.py (``heyoka.lagrangian`` + ``taylor_adaptive``, cold LLVM compile, ``compact_mode`` above 100 operations)
+and sympy.physics.mechanics (``KanesMethod``, its faster formulation for chains, and the plain ``LagrangesMethod``;
+each + ``lambdify(cse=True)`` + ``numpy.linalg.solve`` in the rhs + ``solve_ivp`` DOP853). All at rtol = atol =
+1e-10 over t ∈ [0, 10]; the error is the max-norm of the final state against lagrange's Taylor method (C tape) at
+rtol 1e-15. Interleaved: for each N the routes run one after the other (A, B, C, D), and a route whose first result
+came within a second runs two more rounds (A, B, …, A, B, …), median by total. A route that does not finish within
+the time-out (``--timeout``; ``--sympy-timeout`` for the sympy routes) is stopped and reported as timed out.
 
 Times: wall-clock phases (derive, compile / JIT, integrate) measured inside the route's process, imports not
 counted; CPU time of the same phases (``time.process_time``, imports not counted); and the CPU and wall time of
@@ -17,7 +17,7 @@ the whole process (``resource.getrusage`` of the child: interpreter start-up and
 ``results/first_result_scaling.md``. Run::
 
     python benchmarks/first_result_scaling.py                  # about 15–20 minutes on 2 shared cores
-    python benchmarks/first_result_scaling.py --quick          # N = 2, 5, 10, one round, under a minute
+    python benchmarks/first_result_scaling.py --quick          # N = 2, 5, one round, no LagrangesMethod: ~1 min
     python benchmarks/first_result_scaling.py --derivation structural   # System(..., derivation=...)
 """
 
@@ -34,8 +34,8 @@ from lagrange.bench.problems import derivation_options, get_problem
 from lagrange.bench.report import machine_info
 
 RESULTS = Path(__file__).parent / "results"
-ROUTE_SET = ("python", "taylor_primed", "heyoka", "sympy")
-RATIO_ROUTES = ("python", "taylor_primed", "sympy")
+ROUTE_SET = ("python", "taylor_primed", "heyoka", "sympy_kane", "sympy")
+RATIO_ROUTES = ("python", "taylor_primed", "sympy_kane", "sympy")
 
 
 def _ms(s):
@@ -59,7 +59,7 @@ def run_n(n: int, routes, *, system_kwargs: dict, timeout: float, sympy_timeout:
         todo = [r for r in routes if k == 0 or (runs[r][0].total is not None and runs[r][0].total < REPEAT_BELOW_S)]
         todo = todo[k % max(len(todo), 1):] + todo[:k % max(len(todo), 1)]
         for r in todo:
-            runs[r].append(first_result_once(p, r, ref, timeout=sympy_timeout if r == "sympy" else timeout,
+            runs[r].append(first_result_once(p, r, ref, timeout=sympy_timeout if r.startswith("sympy") else timeout,
                                              system_kwargs=system_kwargs))
             log(f"N={n} {r}: " + (f"{runs[r][-1].total:.2f} s" if runs[r][-1].total is not None
                                   else runs[r][-1].note))
@@ -70,16 +70,16 @@ def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--links", default=None, help="comma-separated N (default 2,5,10,20,50; quick: 2,5,10)")
     ap.add_argument("--timeout", type=float, default=600.0, help="seconds a lagrange or heyoka route may take")
-    ap.add_argument("--sympy-timeout", type=float, default=300.0, help="seconds the plain sympy route may take")
+    ap.add_argument("--sympy-timeout", type=float, default=300.0, help="seconds a sympy route may take")
     ap.add_argument("--derivation", default=None, help="pass System(..., derivation=...) through")
-    ap.add_argument("--quick", action="store_true", help="N = 2, 5, 10 and one round")
+    ap.add_argument("--quick", action="store_true", help="N = 2, 5, one round, no LagrangesMethod route")
     ap.add_argument("--out", default=None)
     args = ap.parse_args()
     system_kwargs = derivation_options(args.derivation)
-    links = [int(v) for v in (args.links or ("2,5,10" if args.quick else "2,5,10,20,50")).split(",")]
+    links = [int(v) for v in (args.links or ("2,5" if args.quick else "2,5,10,20,50")).split(",")]
     rounds = 1 if args.quick else 3
     out = Path(args.out or RESULTS / ("first_result_scaling_quick.md" if args.quick else "first_result_scaling.md"))
-    routes = [r for r in ROUTE_SET if r != "heyoka" or heyoka_available()]
+    routes = [r for r in ROUTE_SET if (r != "heyoka" or heyoka_available()) and not (args.quick and r == "sympy")]
     m = machine_info()
     paragraphs = __doc__.split("\n\n")
     lines = ["# Time to first result against system size (planar N-link pendulum)", "",
@@ -90,7 +90,8 @@ def main() -> None:
                                else "the default path."), "",
              paragraphs[1].replace("\n", " "), "", paragraphs[2].split(" Writes")[0].replace("\n", " "), "",
              "Imports (not in the phase columns) take, in a fresh process, "
-             + ", ".join(f"{_ms(v)} ({k})" for k, v in import_times().items()) + ".", "",
+             + ", ".join(f"{_ms(v)} ({k})" for k, v in import_times(1 if args.quick else 3).items())
+             + " (median of " + ("1" if args.quick else "3") + ").", "",
              "| N | route | derive | compile / JIT | integrate | **total (wall)** | CPU (no imports) "
              "| whole process: CPU / wall (imports counted) | error | note |",
              "|---|---|---|---|---|---|---|---|---|---|"]

@@ -61,6 +61,16 @@ def test_derivation_option_is_passed_only_when_system_takes_it():
         assert isinstance(info.value, (LagrangeError, ValueError))
 
 
+def test_kanes_method_route_is_the_same_pendulum():
+    """sympy's KanesMethod (a second formulation) gives lagrange's accelerations at random states."""
+    from lagrange.bench.sympy_route import kane_pendulum_route
+
+    _, _, rhs = kane_pendulum_route(3)
+    model = n_link_pendulum(3).compile({"g": 9.81})
+    for y in np.random.default_rng(3).uniform(-2, 2, (4, 6)):
+        assert np.allclose(rhs(0.0, y), model.fun(0.0, y), rtol=1e-12, atol=1e-12)
+
+
 def test_median_by_total_skips_failed_runs():
     runs = [FirstResult("r", 1.0, 1.0, 1.0, 0.0), FirstResult("r", None, None, None, None, "timed out"),
             FirstResult("r", 0.5, 0.5, 0.5, 0.0), FirstResult("r", 2.0, 2.0, 2.0, 0.0)]

@@ -64,6 +64,7 @@ ROUTES = {
     "python_auto": "lagrange, python backend, method='auto' (its pick in the label note)",
     "taylor_rerun": "lagrange, taylor (interpreted tape), re-run (derivation, code and interpreter cached)",
     "sympy": "plain sympy.physics.mechanics + lambdify(cse) + solve_ivp DOP853",
+    "sympy_kane": "sympy KanesMethod + lambdify(cse) + solve_ivp DOP853",
     "heyoka": "heyoka.py (lagrangian + taylor_adaptive, cold LLVM compile)",
     "heyoka_rerun": "heyoka.py, re-run (compiled code from heyoka's on-disk cache)",
     "heyoka_default": "heyoka.py, default mode (cold LLVM compile)",
@@ -180,16 +181,16 @@ def _child_timed(problem_name: str, route: str, tol: float, quick: bool, system_
     times = p.times()
     if route.startswith(("numba", "compiled")) or route in _NO_C:
         import numba  # noqa: F401 - imports are not timed (heyoka's import is not either)
-    if route == "sympy":
+    if route in ("sympy", "sympy_kane"):
         from scipy.integrate import solve_ivp
 
-        from .sympy_route import plain_pendulum_route
+        from .sympy_route import kane_pendulum_route, plain_pendulum_route
 
         # y0 = [q1..qN, q̇1..q̇N] straight from the problem: no lagrange derivation in this route
         n = p.pendulum_links
         y0 = np.array([p.initial[f"q{i + 1}"] for i in range(n)] + [p.initial[f"q{i + 1}_dot"] for i in range(n)])
         c0 = time.process_time()
-        d, c, rhs = plain_pendulum_route(n, float(p.params["g"]))
+        d, c, rhs = (plain_pendulum_route if route == "sympy" else kane_pendulum_route)(n, float(p.params["g"]))
         t0 = time.perf_counter()
         Y = solve_ivp(rhs, (0.0, p.t_end), y0, method="DOP853", rtol=tol, atol=tol * p.atol_scale, t_eval=times).y.T
         return dict(derive=d, compile=c, integrate=time.perf_counter() - t0, states=Y.tolist(), cpu_start=c0)
