@@ -2,11 +2,13 @@
 
 Work–precision for the planar N-link pendulum (unit masses and rods, q_i = 0.6(−1)^i/(i+1), q̇ = 0, g = 9.81,
 t ∈ [0, 10]) at N = 10, 20, 50 (``--links``) and rtol = atol = 1e-6, 1e-8, 1e-10 (``--tols``). Routes, each in
-its own persistent worker process (so a set-up that does not finish can be stopped: ``--setup-timeout``):
+its own persistent worker process (so a set-up that does not finish can be stopped: ``--setup-timeout``, scaled
+by N/10 above N = 10; a route whose set-up did not finish is not tried at larger N):
 
 * ``taylor C tape``: ``simulate(method="taylor")`` on a python-backend model, the tape interpreted in C;
 * ``taylor numba series``: the same with a numba-backend model (the tape as straight-line code, JIT per order);
-* ``DOP853 numba compiled loop``: ``simulate(method="DOP853", backend="numba", loop="compiled")``;
+* ``DOP853 numba compiled loop``: ``simulate(method="DOP853", backend="numba", loop="compiled")``, also at
+  1e-11 and 1e-12 (its error at a tolerance is larger than the Taylor methods');
 * ``heyoka compact``: ``heyoka.lagrangian`` on lagrange's T − V, ``taylor_adaptive(..., compact_mode=True)``;
 * ``heyoka default``: the same with ``compact_mode=False`` (heyoka's fastest per step, but its LLVM compile grows
   steeply with the size of the equations).
@@ -62,6 +64,9 @@ ROUTES = {
 LAGRANGE_ROUTES = ("taylor_c", "taylor_series", "dop853_compiled")
 HEYOKA_ROUTES = ("heyoka_compact", "heyoka_default")
 QUICK_ROUTES = ("taylor_c", "dop853_compiled", "heyoka_compact")
+#: DOP853's error at a tolerance is 10–100× the Taylor methods' there: two tighter points extend its curve to the
+#: errors the Taylor methods reach (equal-error comparison without extrapolation)
+DOP853_EXTRA_TOLS = (1e-11, 1e-12)
 REFERENCE_TOL = 1e-16
 CHECK_DOP853_TOL = 1e-13
 T_END = 10.0
@@ -92,6 +97,7 @@ class _Worker:
             return
         if self.route.startswith("heyoka"):
             ta, _ = self.hm.integrator(self.y0, tol, compact=self.route == "heyoka_compact")
+            self.ta = ta
 
             def run():
                 ta.time = 0.0
@@ -134,12 +140,40 @@ class _Worker:
 
         if self.route == "taylor_c":
             tape = self.model.taylor_tape()
-            M, f = self.model.mass_and_forcing(0.0, y)
-            return dict(tape=tape.size, entries=f"{int((tape.mass >= 0).sum())} / {tape.force.size}",
-                        mf=per_call(lambda: self.model.mass_and_forcing(0.0, y), 20),
-                        solve=per_call(lambda: np.linalg.solve(M, f), 200))
+            return dict(tape=tape.size, entries=f"{int((tape.mass >= 0).sum())} / {tape.force.size}")
         if self.route == "dop853_compiled":
-            return dict(fun=per_call(lambda: self.model.fun(0.0, y), 200))
+            import numba
+
+            @numba.njit(cache=False)
+            def ldl_solves(A0, b0, k):  # the rhs's dense LDLᵀ solve alone, as loops in compiled code
+                n = A0.shape[0]
+                A, x = np.empty_like(A0), np.empty_like(b0)
+                for _ in range(k):
+                    A[:, :] = A0
+                    x[:] = b0
+                    for j in range(n):  # L below the diagonal, D on it
+                        for i in range(j, n):
+                            s = A[i, j]
+                            for m in range(j):
+                                s -= A[i, m] * A[j, m] * A[m, m]
+                            A[i, j] = s if i == j else s / A[j, j]
+                    for i in range(n):
+                        for m in range(i):
+                            x[i] -= A[i, m] * x[m]
+                    for i in range(n):
+                        x[i] /= A[i, i]
+                    for i in range(n - 1, -1, -1):
+                        for m in range(i + 1, n):
+                            x[i] -= A[m, i] * x[m]
+                return x
+
+            M, f = self.model.mass_and_forcing(0.0, y)
+            assert np.allclose(ldl_solves(M, f, 1), np.linalg.solve(M, f), rtol=1e-9, atol=1e-12)
+            k = 200
+            return dict(fun=per_call(lambda: self.model.fun(0.0, y), 200),
+                        numba_solve=per_call(lambda: ldl_solves(M, f, k), 1) / k)
+        if self.route.startswith("heyoka"):  # heyoka's elementary operations per Taylor order
+            return dict(heyoka_ops=len(self.ta.decomposition) - 2 * n)
         return {}
 
     def time(self, tol: float) -> dict:
@@ -281,12 +315,14 @@ def measure(n: int, routes, tols, *, repeats: int, system_kwargs: dict, setup_ti
     samples (see the module docstring). ``skip``: route → why it is not tried at this N."""
     workers = {}
     skip = skip or {}
+    tols_of = {r: sorted(set(tols) | (set(DOP853_EXTRA_TOLS) if r == "dop853_compiled" else set()), reverse=True)
+               for r in routes}
     for r in routes:
         if r in skip:
             workers[r] = _Skipped(skip[r])
             continue
         log(f"N={n}: setting up {r}")
-        workers[r] = _Route(n, r, tols, system_kwargs, setup_timeout, env)
+        workers[r] = _Route(n, r, tols_of[r], system_kwargs, setup_timeout, env)
         log(f"N={n}: {r}: " + (f"ready in {workers[r].setup_wall:.1f} s" if workers[r].ok else workers[r].note))
     # reference and its cross-checks (not timed)
     ref, checks = None, {}
@@ -299,10 +335,11 @@ def measure(n: int, routes, tols, *, repeats: int, system_kwargs: dict, setup_ti
             rep = workers[r].ask(tol, run_timeout * 3, once=True)
             if rep and "state" in rep:
                 checks[f"{ROUTES[r]} at {tol:.1g}"] = float(np.max(np.abs(np.array(rep["state"]) - ref)))
-    samples: dict = {(r, tol): [] for r in routes for tol in tols}
+    samples: dict = {(r, tol): [] for r in routes for tol in tols_of[r]}
     stopped: set = set()
     for k in range(repeats):
-        order = [(r, tol) for tol in tols for r in routes]
+        order = [(r, tol) for r in routes for tol in tols_of[r]]
+        order.sort(key=lambda rt: -rt[1])  # by tolerance, the routes side by side
         order = order[k % len(order):] + order[:k % len(order)]  # rotate: no route always first after another
         for r, tol in order:
             w = workers[r]
@@ -319,7 +356,7 @@ def measure(n: int, routes, tols, *, repeats: int, system_kwargs: dict, setup_ti
         log(f"N={n}: round {k + 1}/{repeats} done")
     profile = dict(n=n)
     if do_profile:
-        for r in ("taylor_c", "dop853_compiled"):
+        for r in ("taylor_c", "dop853_compiled", "heyoka_compact"):
             if workers.get(r) and workers[r].ok:
                 rep = workers[r].ask(None, run_timeout, profile=True)
                 if rep and "error" not in rep:
@@ -358,7 +395,8 @@ def ratios(result: dict) -> list[dict]:
 def _t(s) -> str:
     if s is None:
         return "—"
-    return f"{s:.2f} s" if s >= 1 else f"{s * 1e3:.1f} ms" if s >= 1e-3 else f"{s * 1e6:.0f} µs"
+    return (f"{s:.2f} s" if s >= 1 else f"{s * 1e3:.1f} ms" if s >= 1e-3 else f"{s * 1e6:.0f} µs" if s >= 1e-5
+            else f"{s * 1e6:.2f} µs")
 
 
 def write(results: list, args, path: Path) -> None:
@@ -412,15 +450,17 @@ def write(results: list, args, path: Path) -> None:
     if profile:
         prof = ["## What one right-hand side costs (numba backend, one state)", "",
                 "`model.fun` = the generated rhs (M and f assembled, then the linear solve, in one compiled "
-                "function); `mass_and_forcing` = M and f alone (compiled python-backend function, called from "
-                "Python: includes the call overhead); `np.linalg.solve` = a dense LU solve of the same size from "
-                "Python; tape = Taylor tape instructions per order (M and f; the solve is done by the interpreter "
-                "on top). Median of 7 timeit repeats.", "",
-                "| N | model.fun (numba) | mass_and_forcing (python backend) | np.linalg.solve (n×n) | "
-                "tape instructions | M entries / f entries on the tape |", "|---|---|---|---|---|---|"]
+                "function, called from Python; the solve is an unrolled LDLᵀ); `LDLᵀ in numba` = the same "
+                "factorization and solve (n³/6 multiply-adds) written as loops in compiled code, so M and f cost "
+                "about the difference. Taylor: lagrange's tape instructions per "
+                "order (M and f; the interpreter solves with M on top, O(n²) per order after one LU per step) "
+                "against heyoka's elementary operations per order (its decomposition of the explicit q̈, solve "
+                "included). Median of 7 timeit repeats.", "",
+                "| N | model.fun (numba) | LDLᵀ in numba | lagrange tape instructions | M / f entries on the tape "
+                "| heyoka operations per order |", "|---|---|---|---|---|---|"]
         for row in profile:
-            prof.append(f"| {row['n']} | {_t(row.get('fun'))} | {_t(row.get('mf'))} | {_t(row.get('solve'))} | "
-                        f"{row.get('tape', '—')} | {row.get('entries', '—')} |")
+            prof.append(f"| {row['n']} | {_t(row.get('fun'))} | {_t(row.get('numba_solve'))} "
+                        f"| {row.get('tape', '—')} | {row.get('entries', '—')} | {row.get('heyoka_ops', '—')} |")
         prof.append("")
     path.write_text("\n".join(lines + summary + [""] + body + prof) + "\n", encoding="utf-8")
     _plot(results, path.with_suffix(".png"))
@@ -475,8 +515,8 @@ def main() -> None:
     ap.add_argument("--tols", default=None, help="comma-separated rtol = atol (default 1e-6,1e-8,1e-10)")
     ap.add_argument("--routes", default=None, help="comma-separated routes: " + ", ".join(ROUTES))
     ap.add_argument("--repeats", type=int, default=None, help="interleaved rounds (default 5; quick: 3)")
-    ap.add_argument("--setup-timeout", type=float, default=None, help="seconds a route's set-up may take "
-                    "(default 300; quick: 40)")
+    ap.add_argument("--setup-timeout", type=float, default=None, help="seconds a route's set-up may take at "
+                    "N ≤ 10, N/10 times that above (default 180; quick: 40)")
     ap.add_argument("--derivation", default=None, help="pass System(..., derivation=...) through")
     ap.add_argument("--profile", action=argparse.BooleanOptionalAction, default=None,
                     help="per-call rhs profile (default on, off in --quick)")
@@ -503,7 +543,7 @@ def main() -> None:
         print("heyoka is not installed (pip install \"lagrange-dynamics[heyoka]\"): lagrange routes only")
         routes = [r for r in routes if r not in HEYOKA_ROUTES]
     args.repeats = args.repeats or (3 if q else 5)
-    setup_timeout = args.setup_timeout or (40.0 if q else 300.0)
+    setup_timeout = args.setup_timeout or (40.0 if q else 180.0)
     out = Path(args.out or RESULTS / ("nlink_integration_quick.md" if q else "nlink_integration.md"))
     out.parent.mkdir(parents=True, exist_ok=True)
 
@@ -519,12 +559,13 @@ def main() -> None:
     skip: dict = {}
     for n in links:
         res = measure(n, routes, tols, repeats=args.repeats, system_kwargs=system_kwargs,
-                      setup_timeout=setup_timeout, run_timeout=120.0 if q else 300.0, stop=2.0 if q else 10.0,
-                      env=env, log=log, do_profile=args.profile if args.profile is not None else not q, skip=skip)
+                      setup_timeout=setup_timeout * max(1.0, n / 10), run_timeout=120.0 if q else 300.0,
+                      stop=2.0 if q else 10.0, env=env, log=log,
+                      do_profile=args.profile if args.profile is not None else not q, skip=skip)
         results.append(res)
         for r, (_, _, note) in res["setup"].items():  # a set-up that timed out is not tried at larger N
             if note.startswith("set-up did not finish"):
-                skip.setdefault(r, f"not tried: its set-up did not finish within {setup_timeout:g} s at N = {n}")
+                skip.setdefault(r, f"not tried: its set-up did not finish at N = {n}")
         write(results, args, out)
     print(out.read_text())
 
