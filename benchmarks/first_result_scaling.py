@@ -50,8 +50,10 @@ def reference(p, system) -> np.ndarray:
                            t_eval=p.times()).y
 
 
-def run_n(n: int, routes, *, system_kwargs: dict, timeout: float, sympy_timeout: float, rounds: int, log) -> dict:
-    """Every route once (and, for those under :data:`REPEAT_BELOW_S`, ``rounds − 1`` more interleaved rounds)."""
+def run_n(n: int, routes, *, system_kwargs: dict, timeout: float, sympy_timeout: float, rounds: int, log,
+          done=lambda r, result: None) -> dict:
+    """Every route once (and, for those under :data:`REPEAT_BELOW_S`, ``rounds − 1`` more interleaved rounds);
+    ``done(route, result)`` after each route's first run (results so far, for a partial table)."""
     p = get_problem(f"nlink{n}", system_kwargs=system_kwargs)
     ref = reference(p, p.build())
     runs: dict = {r: [] for r in routes}
@@ -63,6 +65,8 @@ def run_n(n: int, routes, *, system_kwargs: dict, timeout: float, sympy_timeout:
                                              system_kwargs=system_kwargs))
             log(f"N={n} {r}: " + (f"{runs[r][-1].total:.2f} s" if runs[r][-1].total is not None
                                   else runs[r][-1].note))
+            if k == 0:
+                done(r, runs[r][0])
     return {r: median_by_total(v) for r, v in runs.items()}
 
 
@@ -100,14 +104,23 @@ def main() -> None:
     def log(msg):
         print(msg, flush=True)
 
+    def row(n, route, r):
+        err = "—" if r.error is None else f"{r.error:.1e}"
+        whole = "—" if r.process_cpu is None else f"{_ms(r.process_cpu)} / {_ms(r.process_wall)}"
+        return (f"| {n} | {ROUTES[route]} | {_ms(r.derive)} | {_ms(r.compile)} | {_ms(r.integrate)} | "
+                f"**{_ms(r.total)}** | {_ms(r.cpu)} | {whole} | {err} | {r.note} |")
+
     for n in links:
+        partial: list = []
+
+        def done(route, r, n=n, partial=partial):  # a partial table while N's routes run (long runs at N = 50)
+            partial.append(row(n, route, r))
+            out.write_text("\n".join(lines + partial) + "\n", encoding="utf-8")
+
         for route, r in run_n(n, routes, system_kwargs=system_kwargs, timeout=args.timeout,
-                              sympy_timeout=args.sympy_timeout, rounds=rounds, log=log).items():
+                              sympy_timeout=args.sympy_timeout, rounds=rounds, log=log, done=done).items():
             results[(n, route)] = r
-            err = "—" if r.error is None else f"{r.error:.1e}"
-            whole = "—" if r.process_cpu is None else f"{_ms(r.process_cpu)} / {_ms(r.process_wall)}"
-            lines.append(f"| {n} | {ROUTES[route]} | {_ms(r.derive)} | {_ms(r.compile)} | {_ms(r.integrate)} | "
-                         f"**{_ms(r.total)}** | {_ms(r.cpu)} | {whole} | {err} | {r.note} |")
+            lines.append(row(n, route, r))
         out.write_text("\n".join(lines + _ratios(results, routes)) + "\n", encoding="utf-8")  # after each N
     print(out.read_text())
 
