@@ -32,8 +32,8 @@ log-linearly on its work–precision curve (no extrapolation), and the ratio is 
 ``--derivation structural|expanded|auto`` builds the pendulum with ``System(..., derivation=...)`` (refused
 with a clear message when the installed System has no such keyword). Run::
 
-    python benchmarks/nlink_integration.py --quick     # N = 10 and 20, two tolerances, one route of each kind
-    python benchmarks/nlink_integration.py             # N = 10, 20, 50 (about 15 minutes on a quiet 2-core box)
+    python benchmarks/nlink_integration.py --quick     # N = 5 and 10, two tolerances, three routes (~1 min)
+    python benchmarks/nlink_integration.py             # N = 10, 20, 50: 30+ minutes on a loaded 2-core box
 """
 
 from __future__ import annotations
@@ -511,7 +511,7 @@ def _plot(results, png: Path) -> None:
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--worker", help=argparse.SUPPRESS)
-    ap.add_argument("--links", default=None, help="comma-separated N (default 10,20,50; quick: 10,20)")
+    ap.add_argument("--links", default=None, help="comma-separated N (default 10,20,50; quick: 5,10)")
     ap.add_argument("--tols", default=None, help="comma-separated rtol = atol (default 1e-6,1e-8,1e-10)")
     ap.add_argument("--routes", default=None, help="comma-separated routes: " + ", ".join(ROUTES))
     ap.add_argument("--repeats", type=int, default=None, help="interleaved rounds (default 5; quick: 3)")
@@ -533,7 +533,7 @@ def main() -> None:
 
     system_kwargs = derivation_options(args.derivation)  # refuses an unknown keyword before anything runs
     q = args.quick
-    links = [int(v) for v in (args.links or ("10,20" if q else "10,20,50")).split(",")]
+    links = [int(v) for v in (args.links or ("5,10" if q else "10,20,50")).split(",")]
     tols = [float(v) for v in (args.tols or ("1e-6,1e-9" if q else "1e-6,1e-8,1e-10")).split(",")]
     routes = args.routes.split(",") if args.routes else list(QUICK_ROUTES if q else ROUTES)
     unknown = [r for r in routes if r not in ROUTES]
