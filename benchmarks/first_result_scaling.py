@@ -24,6 +24,7 @@ the whole process (``resource.getrusage`` of the child: interpreter start-up and
 from __future__ import annotations
 
 import argparse
+import os
 from pathlib import Path
 
 import numpy as np
@@ -87,7 +88,9 @@ def main() -> None:
     m = machine_info()
     paragraphs = __doc__.split("\n\n")
     lines = ["# Time to first result against system size (planar N-link pendulum)", "",
-             f"Machine: {m.get('cpu', '?')}, {m.get('cores', '?')} logical cores, shared with other work. Versions: "
+             f"Machine: {m.get('cpu', '?')}, {m.get('cores', '?')} logical cores, shared with other work (load average "
+             f"{os.getloadavg()[0]:.1f} when this table was written: wall times stretch with it, CPU times much less). "
+             "Versions: "
              + ", ".join(f"{k} {v}" for k, v in m.get("versions", {}).items() if v) + "."
              + (f" C compiler: {m['c_compiler']}." if m.get("c_compiler") else ""), "",
              "Derivation: " + (f"`System(..., derivation={args.derivation!r})`." if args.derivation

@@ -405,9 +405,11 @@ def write(results: list, args, path: Path) -> None:
     m = machine_info()
     doc = __doc__.split("\n\n")
     lines = ["# N-link pendulum: integration at equal error, lagrange against heyoka", "",
-             f"Machine: {m.get('cpu', '?')}, {m.get('cores', '?')} logical cores, shared with other work. Versions: "
+             f"Machine: {m.get('cpu', '?')}, {m.get('cores', '?')} logical cores, shared with other work (load average "
+             f"{os.getloadavg()[0]:.1f} when this table was written: wall times stretch with it, CPU times much less). "
+             "Versions: "
              + ", ".join(f"{k} {v}" for k, v in m.get("versions", {}).items() if v) + ".", "",
-             f"Run: `python benchmarks/nlink_integration.py {' '.join(sys.argv[1:])}`".rstrip() + "; "
+             "Run: `" + " ".join(["python benchmarks/nlink_integration.py", *sys.argv[1:]]) + "`; "
              f"{args.repeats} interleaved rounds; derivation: "
              + (f"`System(..., derivation={args.derivation!r})`" if args.derivation else "the default path") + ".",
              "", *(d if "\n* " in d else d.replace("\n", " ") for d in doc[1:4]), ""]
