@@ -11,12 +11,13 @@ from .model.system import System
 __all__ = ["n_link_pendulum"]
 
 
-def n_link_pendulum(n: int, *, symbolic: bool = False, derivation: str = "auto") -> System:
+def n_link_pendulum(n: int, *, symbolic: bool = False, **system_kwargs) -> System:
     """Planar pendulum of ``n`` point masses on massless rods, absolute angles from the downward vertical.
 
     With ``symbolic=False`` (default) masses and lengths are 1 and ``g`` is a parameter, as in
     ``reference/numerics.md``; with ``symbolic=True`` masses ``m_i`` and lengths ``l_i`` are parameters.
-    ``derivation`` is passed to :class:`~lagrange.System`.
+    ``system_kwargs`` are passed to :class:`~lagrange.System` as they are (e.g. ``derivation="expanded"``;
+    keywords it does not take raise its ``TypeError``); ``name`` defaults to ``"<n>-link pendulum"``.
     """
     if n < 1:
         raise ValueError("n must be at least 1")
@@ -35,4 +36,5 @@ def n_link_pendulum(n: int, *, symbolic: bool = False, derivation: str = "auto")
         Y -= length * sp.cos(q)
         bodies.append(Particle(m, (X, Y), name=f"bob{i + 1}"))
         V += m * g * Y
-    return System(list(qs), bodies=bodies, V=V, name=f"{n}-link pendulum", derivation=derivation)
+    system_kwargs.setdefault("name", f"{n}-link pendulum")
+    return System(list(qs), bodies=bodies, V=V, **system_kwargs)

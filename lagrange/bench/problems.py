@@ -36,7 +36,8 @@ from ..model.rigid_body import RigidBody
 from ..model.rotations import EulerAngles
 from ..model.system import System
 
-__all__ = ["BenchProblem", "PROBLEMS", "get_problem", "kepler_state", "belt_state", "belt_stick_interval"]
+__all__ = ["BenchProblem", "PROBLEMS", "MAX_LINKS", "get_problem", "derivation_options", "kepler_state", "belt_state",
+           "belt_stick_interval"]
 
 
 @dataclass(frozen=True)
@@ -236,10 +237,11 @@ def _double_pendulum(quick: bool) -> BenchProblem:
         long_steps=(0.02,))
 
 
-def _nlink(quick: bool, n: int = 5) -> BenchProblem:
+def _nlink(quick: bool, n: int = 5, system_kwargs: dict | None = None) -> BenchProblem:
+    kw = dict(system_kwargs or {})
     return BenchProblem(
         "nlink" if n == 5 else f"nlink{n}", f"planar {n}-link pendulum, q_i = 0.6(−1)^i/(i+1), t ∈ [0, 10]",
-        lambda: n_link_pendulum(n), {"g": 9.81}, _pendulum_initial(n), 10.0, pendulum_links=n, geometric=False,
+        lambda: n_link_pendulum(n, **kw), {"g": 9.81}, _pendulum_initial(n), 10.0, pendulum_links=n, geometric=False,
         notes="Sensitive dependence: errors grow ~1e5-fold over t = 10, so rtol is not the achieved accuracy. "
               "The geometric methods (which build in about a second here) are compared on the double pendulum, "
               "the top and Kepler, where fixed steps can reach the reference.")
@@ -301,9 +303,16 @@ PROBLEMS: dict[str, Callable[[bool], BenchProblem]] = {
 }
 
 
-def get_problem(name: str, *, quick: bool = False) -> BenchProblem:
+#: the largest N of the ``"nlink<N>"`` problems
+MAX_LINKS = 50
+
+
+def get_problem(name: str, *, quick: bool = False, system_kwargs: dict | None = None) -> BenchProblem:
     """The problem called ``name`` (see :data:`PROBLEMS`; also ``"nlink<N>"``, the planar N-link pendulum for
-    2 ≤ N ≤ 20, outside the default suite); ``quick`` shortens horizons and sweeps.
+    2 ≤ N ≤ :data:`MAX_LINKS`, outside the default suite); ``quick`` shortens horizons and sweeps.
+
+    ``system_kwargs`` are passed to :class:`~lagrange.System` when an N-link pendulum is built (e.g.
+    :func:`derivation_options`); the other problems refuse them (``SpecError``).
 
     >>> get_problem("kepler").t_end == 20 * math.pi
     True
@@ -311,8 +320,35 @@ def get_problem(name: str, *, quick: bool = False) -> BenchProblem:
     10
     """
     m = re.fullmatch(r"nlink(\d+)", name)
-    if m and 2 <= int(m.group(1)) <= 20:
-        return _nlink(quick, int(m.group(1)))
+    if m and 2 <= int(m.group(1)) <= MAX_LINKS:
+        return _nlink(quick, int(m.group(1)), system_kwargs)
     if name not in PROBLEMS:
-        raise SpecError(f"unknown benchmark problem {name!r}; choose from {', '.join(PROBLEMS)}")
+        raise SpecError(f"unknown benchmark problem {name!r}; choose from {', '.join(PROBLEMS)} or nlink<N> "
+                        f"(2 ≤ N ≤ {MAX_LINKS})")
+    if system_kwargs and name != "nlink":
+        raise SpecError(f"System options ({', '.join(system_kwargs)}) are passed through for the N-link "
+                        f"pendulums only, not for {name!r}")
+    if name == "nlink":
+        return _nlink(quick, 5, system_kwargs)
     return PROBLEMS[name](quick)
+
+
+def derivation_options(derivation: str | None) -> dict:
+    """``{"derivation": derivation}`` for :class:`~lagrange.System`, or ``{}`` for None (the default path).
+
+    The benchmarks pass it through to the N-link pendulum (:func:`get_problem`) so they can be re-run with
+    ``System(..., derivation="structural"|"expanded"|"auto")`` once that keyword exists; when the installed
+    System does not take it, a :class:`~lagrange.errors.SpecError` (a ``ValueError``) says so instead of
+    silently measuring the default path.
+
+    >>> derivation_options(None)
+    {}
+    """
+    if derivation is None:
+        return {}
+    import inspect
+
+    if "derivation" not in inspect.signature(System.__init__).parameters:
+        raise SpecError(f"derivation={derivation!r} was asked for, but this lagrange's System takes no "
+                        "'derivation' keyword (the structural derivation is not in this version)")
+    return {"derivation": derivation}
