@@ -78,6 +78,7 @@ def main() -> None:
     ap.add_argument("--sympy-timeout", type=float, default=300.0, help="seconds a sympy route may take")
     ap.add_argument("--derivation", default=None, help="pass System(..., derivation=...) through")
     ap.add_argument("--quick", action="store_true", help="N = 2, 5, one round, no LagrangesMethod route")
+    ap.add_argument("--routes", default=None, help=f"comma-separated subset of {','.join(ROUTE_SET)}")
     ap.add_argument("--out", default=None)
     args = ap.parse_args()
     system_kwargs = derivation_options(args.derivation)
@@ -85,6 +86,12 @@ def main() -> None:
     rounds = 1 if args.quick else 3
     out = Path(args.out or RESULTS / ("first_result_scaling_quick.md" if args.quick else "first_result_scaling.md"))
     routes = [r for r in ROUTE_SET if (r != "heyoka" or heyoka_available()) and not (args.quick and r == "sympy")]
+    if args.routes:
+        wanted = args.routes.split(",")
+        unknown = sorted(set(wanted) - set(ROUTE_SET))
+        if unknown:
+            ap.error(f"unknown route(s) {', '.join(unknown)}; choose from {', '.join(ROUTE_SET)}")
+        routes = [r for r in routes if r in wanted]
     m = machine_info()
     paragraphs = __doc__.split("\n\n")
     lines = ["# Time to first result against system size (planar N-link pendulum)", "",

@@ -252,6 +252,7 @@ def test_compile_and_simulate_never_expand(monkeypatch):
         raise AssertionError("the expanded derivation ran")
 
     monkeypatch.setattr(expanded_module, "lagrange_equations", refuse)
+    monkeypatch.setenv("LAGRANGE_DERIVATION_CACHE", "0")  # an on-disk entry would hide an expansion from `refuse`
     s = n_link_pendulum(7)
     init = {**{f"q{i + 1}": 0.3 for i in range(7)}, **{f"q{i + 1}_dot": 0.0 for i in range(7)}}
     for method in ("DOP853", "Radau", "auto"):
@@ -265,6 +266,21 @@ def test_compile_and_simulate_never_expand(monkeypatch):
     assert pickle.loads(pickle.dumps(eqs)) == eqs
     with pytest.raises(AssertionError, match="expanded derivation ran"):
         eqs.mass_matrix  # noqa: B018 - the analysis fields are the expanded equations, derived on demand
+
+
+def test_expansion_is_served_by_the_derivation_cache(monkeypatch, tmp_path):
+    """The expanded fields of structural equations (the Taylor tape, heyoka, analyses) go through the on-disk
+    derivation cache: a second declaration of the same system loads them instead of deriving again."""
+    from lagrange.codegen import derivation_cache as dc
+
+    monkeypatch.setenv("LAGRANGE_CACHE_DIR", str(tmp_path / "cache"))
+    monkeypatch.setenv("LAGRANGE_DERIVATION_CACHE", "1")
+    first = n_link_pendulum(6).derived.mass_matrix
+    hits = dc.statistics()["derived"]["hit"]
+    again = n_link_pendulum(6)
+    assert again.derivation == "structural"
+    assert again.derived.mass_matrix == first == n_link_pendulum(6, derivation="expanded").derived.mass_matrix
+    assert dc.statistics()["derived"]["hit"] >= hits + 2  # the structural system's expansion, then the expanded one
 
 
 def test_analysis_fields_are_the_expanded_equations():

@@ -394,9 +394,10 @@ class StructuralEquations(Equations):
                 parent, mapping, new_params = replaced
                 e = _replaced(parent.expanded(), mapping, new_params)
             else:
+                from ..codegen.derivation_cache import cached_equations  # a re-run loads them from disk
                 from .lagrange import lagrange_equations
 
-                e = lagrange_equations(self._system)
+                e = cached_equations(self._system, lagrange_equations)
             object.__setattr__(self, "_expanded", e)
         return e
 
