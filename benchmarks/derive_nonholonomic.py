@@ -41,6 +41,8 @@ HERE = Path(__file__).resolve().parent
 _PRELUDE = r"""
 import json, os, sys, time
 os.environ["LAGRANGE_DERIVATION_CACHE"] = "0"
+if os.environ.get("BENCH_NO_SYMENGINE") == "1":
+    sys.modules["symengine"] = None  # as if not installed: lagrange takes its sympy-only path
 import numpy as np, sympy as sp
 import sympy.physics.mechanics as me
 import lagrange
@@ -129,16 +131,19 @@ print(json.dumps({"cpu": cpu, "wall": wall}))
 """
 
 
-#: the tools compared: lagrange's two derivations (``System(derivation=...)``) and sympy's KanesMethod
+#: the tools compared: lagrange's two derivations (``System(derivation=...)``) and sympy's KanesMethod;
+#: ``--without-symengine`` adds both derivations with symengine hidden (the sympy-only path, item 6 of issue #23)
 TOOLS = ("structural", "expanded", "kane")
+NO_SYMENGINE = ("structural, no symengine", "expanded, no symengine")
 
 
 def run(tool: str, model: str) -> dict:
     if tool == "kane":
         body = _KANE_DISC if model == "disc" else _kane_bicycle_source()
     else:
-        body = f"DERIVATION = {tool!r}\n" + (_LAGRANGE_BICYCLE if model == "bicycle" else _LAGRANGE_DISC)
+        body = f"DERIVATION = {tool.split(',')[0]!r}\n" + (_LAGRANGE_BICYCLE if model == "bicycle" else _LAGRANGE_DISC)
     env = dict(os.environ)
+    env["BENCH_NO_SYMENGINE"] = "1" if tool.endswith("no symengine") else "0"
     r = subprocess.run([sys.executable, "-c", _PRELUDE + body + _EPILOGUE], capture_output=True, text=True,
                        timeout=900, env=env)
     if r.returncode != 0:
@@ -154,13 +159,20 @@ def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--quick", action="store_true", help="one repetition, the rolling disc only (< 60 s)")
     ap.add_argument("--reps", type=int, default=3)
+    ap.add_argument("--without-symengine", action="store_true",
+                    help="also run both derivations with symengine hidden (sympy-only CSE and printing)")
+    ap.add_argument("--models", default=None, help="comma-separated subset of bicycle,disc")
+    ap.add_argument("--out", default="derive_nonholonomic.md", help="file name under benchmarks/results/")
     args = ap.parse_args()
     models = ["disc"] if args.quick else ["bicycle", "disc"]
+    if args.models:
+        models = [m for m in args.models.split(",") if m in ("bicycle", "disc")]
+    tools = TOOLS + (NO_SYMENGINE if args.without_symengine else ())
     reps = 1 if args.quick else args.reps
-    cells: dict = {(tool, mdl): [] for mdl in models for tool in TOOLS}
+    cells: dict = {(tool, mdl): [] for mdl in models for tool in tools}
     for _ in range(reps):
         for mdl in models:
-            for tool in TOOLS:  # interleaved: A, B, C, A, B, C, …
+            for tool in tools:  # interleaved: A, B, C, A, B, C, …
                 out = run(tool, mdl)
                 cells[tool, mdl].append(out)
                 print(tool, mdl, " ".join(f"{c:.2f}" for c in out["cpu"]), flush=True)
@@ -182,7 +194,7 @@ def main() -> None:
              "| Kane / lagrange (CPU) |",
              "|---|---|---|---|---|---|---|---|"]
     for mdl in models:
-        for tool in TOOLS:
+        for tool in tools:
             ph = [med(tool, mdl, "cpu", k) for k in range(3)]
             tot, wall = med(tool, mdl, "cpu"), med(tool, mdl, "wall")
             ratio = med("kane", mdl, "cpu") / med(tool, mdl, "cpu")
@@ -193,8 +205,8 @@ def main() -> None:
     print(text)
     if not args.quick:
         RESULTS.mkdir(exist_ok=True)
-        (RESULTS / "derive_nonholonomic.md").write_text(text)
-        print(f"wrote {RESULTS / 'derive_nonholonomic.md'}")
+        (RESULTS / args.out).write_text(text)
+        print(f"wrote {RESULTS / args.out}")
 
 
 if __name__ == "__main__":

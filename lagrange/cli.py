@@ -108,7 +108,7 @@ def _cmd_derive(args) -> int:
         for eq in display_equations(system):
             print(latex(eq))
     else:
-        print(format_equations(system, width))
+        print(format_equations(system, width, full=args.full))
     momenta = format_momenta(system, width)
     if momenta:
         print("\n" + momenta)
@@ -778,6 +778,8 @@ def _parser() -> argparse.ArgumentParser:
     p = sub.add_parser("derive", parents=[quiet], help="print Lagrange's equations of a system")
     p.add_argument("spec", help=spec_help)
     p.add_argument("--latex", action="store_true", help="print LaTeX instead of text")
+    p.add_argument("--full", action="store_true", help="print every equation whole, however long (by default an "
+                   "equation of more than 6,000 terms and factors is summarized in one line)")
     p.set_defaults(func=_cmd_derive)
 
     p = sub.add_parser("simulate", parents=[quiet], help="integrate the equations of motion",

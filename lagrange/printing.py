@@ -10,6 +10,8 @@ code never see either.
 
 from __future__ import annotations
 
+import textwrap
+
 import sympy as sp
 from sympy.printing.latex import LatexPrinter
 from sympy.printing.pretty.pretty import PrettyPrinter
@@ -30,6 +32,8 @@ __all__ = ["WIDTH", "format_equations", "format_expression", "format_momenta", "
 WIDTH = 100
 #: Expressions above this many operations are shown as derived (no trigonometric tidy-up).
 TIDY_LIMIT = 400
+#: an equation with more nodes than this in its printed form is summarized by :func:`format_equations`
+TERMINAL_NODES = 6_000
 #: Wall-time budget of one expression's tidy-up (seconds); past it the expression is shown as derived.
 TIDY_SECONDS = 2.0
 _INDENT = "    "  # continuation lines of a wrapped equation
@@ -230,17 +234,38 @@ def _header(system, width: int) -> str:
     return textwrap.fill(text, width, subsequent_indent=_INDENT, break_on_hyphens=False)
 
 
-def format_equations(system, width: int = WIDTH) -> str:
+def _tree_size(e, cap: int) -> int:
+    """Nodes of ``e``'s expression tree with repeated subtrees counted each time (what a printed form shows);
+    stops counting above ``cap``."""
+    n = 0
+    for _ in sp.preorder_traversal(e):
+        n += 1
+        if n > cap:
+            break
+    return n
+
+
+def format_equations(system, width: int = WIDTH, *, full: bool = False) -> str:
     """The system's equations of motion as terminal text, one block per coordinate, lines of at most
-    ``width`` columns (:func:`display_equations` wrapped by :func:`format_expression`)."""
+    ``width`` columns (:func:`display_equations` wrapped by :func:`format_expression`).
+
+    An equation with more than :data:`TERMINAL_NODES` nodes in its printed form (the Whipple bicycle's have
+    up to ~70,000) is not printed but summarized in one line: a screenful of it cannot be read, and sympy's
+    pretty printer needs minutes for it. ``full=True`` prints every equation whole (``lagrange derive --full``).
+    """
     lines = [_header(system, width)]
-    eqs = display_equations(system)
     labels = [f"[{q.func.__name__}]" for q in system.coordinates]
     labels += [f"[constraint {name}, multiplier λ{k + 1}]" for k, name in enumerate(system.derived.constraint_names)]
-    for label, eq in zip(labels, eqs):
+    for label, eq in zip(labels, system.equations()):
         lines.append("")
         lines.append(label)
-        lines.append(format_expression(eq, width))
+        if not full and _tree_size(eq, TERMINAL_NODES) > TERMINAL_NODES:
+            lines.append(textwrap.fill(
+                f"(more than {TERMINAL_NODES:,} terms and factors: too long to read here; `lagrange derive "
+                "--full` prints it whole, `--latex` as LaTeX, System.equations() gives it to Python)",
+                width, initial_indent=_INDENT, subsequent_indent=_INDENT))
+        else:
+            lines.append(format_expression(tidy_trig(eq), width))
     return "\n".join(lines)
 
 

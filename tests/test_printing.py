@@ -130,3 +130,26 @@ def test_conserved_momenta_are_whole_equations():
     assert lines[row - 1].strip() == "2"  # the square sits above it: one two-line picture, not two lines
     assert "p_z = m⋅z\u0307" in text
     assert format_momenta(lg.System([r], T=m * r.diff(t) ** 2 / 2, V=k * r**2 / 2)) == ""
+
+
+def test_an_equation_too_long_to_read_is_summarized_unless_full(monkeypatch):
+    """format_equations summarizes an equation above TERMINAL_NODES nodes in one line (naming how to get it
+    whole) and prints the others; full=True prints every one."""
+    import lagrange.printing as printing
+    from lagrange import Particle, System, coordinates, parameters
+
+    x, y = coordinates("x y")
+    m, k = parameters("m k")
+    V = k * x**2 / 2 + sum(sp.cos(y) ** j / (j + 1) for j in range(1, 40))  # a long force on y, a short one on x
+    s = System([x, y], bodies=[Particle(m, (x, y))], V=V)
+    long_size = printing._tree_size(s.equations()[1], 10**6)
+    short_size = printing._tree_size(s.equations()[0], 10**6)
+    assert short_size < long_size
+    monkeypatch.setattr(printing, "TERMINAL_NODES", (short_size + long_size) // 2)
+    text = printing.format_equations(s)
+    blocks = text.split("[y]")
+    assert "too long to read here" not in blocks[0] and "k" in blocks[0]  # x's equation printed
+    assert "too long to read here" in blocks[1] and "lagrange derive --full" in blocks[1]
+    full = printing.format_equations(s, full=True)
+    assert "too long to read here" not in full
+    assert full.count("cos") == 38  # ∂V/∂y: every term of the sum, j = 2 … 39 (j = 1 gives sin y alone)
