@@ -65,16 +65,8 @@ def plain_pendulum_route(n: int, g: float = 9.81, *, cse: bool = True) -> tuple[
     rep = dict(zip(u, us)) | dict(zip(q, qs))
     M, f = msubs(lm.mass_matrix, rep), msubs(lm.forcing, rep)
     t1 = time.perf_counter()
-    fM = sp.lambdify((qs, us, gs), M, modules="numpy", cse=cse)
-    ff = sp.lambdify((qs, us, gs), f, modules="numpy", cse=cse)
-    t2 = time.perf_counter()
-
-    def rhs(t, y):
-        acc = np.linalg.solve(np.asarray(fM(y[:n], y[n:], g), dtype=float),
-                              np.asarray(ff(y[:n], y[n:], g), dtype=float).ravel())
-        return np.concatenate([y[n:], acc])
-
-    return t1 - t0, t2 - t1, rhs
+    rhs = _lambdified_rhs(M, f, qs, us, gs, g, cse)
+    return t1 - t0, time.perf_counter() - t1, rhs
 
 
 def kane_pendulum_route(n: int, g: float = 9.81, *, cse: bool = True) -> tuple[float, float, Callable]:
@@ -110,13 +102,20 @@ def kane_pendulum_route(n: int, g: float = 9.81, *, cse: bool = True) -> tuple[f
     rep = dict(zip(u, us)) | dict(zip(q, qs))
     M, f = kane.mass_matrix.xreplace(rep), kane.forcing.xreplace(rep)
     t1 = time.perf_counter()
+    rhs = _lambdified_rhs(M, f, qs, us, gs, g, cse)
+    return t1 - t0, time.perf_counter() - t1, rhs
+
+
+def _lambdified_rhs(M, f, qs, us, gs, g: float, cse: bool) -> Callable:
+    """``rhs(t, y)`` of ``M(q, u) u̇ = f(q, u)`` with y = (q, u): M and f by ``lambdify`` (numpy, ``cse``),
+    ``numpy.linalg.solve`` at each call — what a user of sympy.physics.mechanics writes."""
+    n = len(qs)
     fM = sp.lambdify((qs, us, gs), M, modules="numpy", cse=cse)
     ff = sp.lambdify((qs, us, gs), f, modules="numpy", cse=cse)
-    t2 = time.perf_counter()
 
     def rhs(t, y):
         acc = np.linalg.solve(np.asarray(fM(y[:n], y[n:], g), dtype=float),
                               np.asarray(ff(y[:n], y[n:], g), dtype=float).ravel())
         return np.concatenate([y[n:], acc])
 
-    return t1 - t0, t2 - t1, rhs
+    return rhs

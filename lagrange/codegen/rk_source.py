@@ -56,9 +56,17 @@ def field_module_source(eqs: Equations, fused: FusedExpressions, n_params: int) 
     ``field``. All but ``rhs`` carry their decorators; the backend decorates ``rhs``
     (:func:`lagrange.codegen.numba_backend.decorate`). ``n_params`` includes the rough-constraint signs, as
     in :func:`rhs_source`."""
-    n2 = 2 * fused.n
-    parts = [f"@numba.njit({_NUMPY_ERRORS})\n"
-             + rhs_source(fused, n_params=n_params, flavour="numba_status", name="rhs_into"),
+    into = f"@numba.njit({_NUMPY_ERRORS})\n" + rhs_source(fused, n_params=n_params, flavour="numba_status",
+                                                          name="rhs_into")
+    return field_module_around(into, eqs, n_params)
+
+
+def field_module_around(into: str, eqs: Equations, n_params: int) -> str:
+    """The module of :func:`field_module_source` around ``into``, the decorated source of a status-returning
+    ``rhs_into(t, y, p, out)`` (from the expanded equations, or from the structural assembly of
+    :mod:`lagrange.codegen.structural_source`): ``rhs``, ``power`` (if not conservative) and ``field``."""
+    n2 = 2 * eqs.n
+    parts = [into,
              f"def rhs(t, y, p):\n    out = np.empty({n2})\n    if not rhs_into(t, y, p, out):\n"
              "        raise ZeroDivisionError('mass matrix is not positive definite')\n    return out\n"]
     if eqs.is_conservative:

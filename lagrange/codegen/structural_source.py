@@ -442,18 +442,7 @@ def structural_module_source(eqs: StructuralEquations, backend: str, n_params: i
     if eqs.m:
         return structural_source(eqs, n_params=n_params, flavour="numba", constraint_rhs=constraint_rhs)
     from .numba_backend import decorate
-    from .rk_source import _NUMPY_ERRORS, FIELD_SIGNATURE, _power_source
+    from .rk_source import _NUMPY_ERRORS, field_module_around
 
     into = structural_source(eqs, n_params=n_params, flavour="numba_status", name="rhs_into")
-    n2 = 2 * eqs.n
-    parts = [decorate(into, options=_NUMPY_ERRORS),
-             f"def rhs(t, y, p):\n    out = np.empty({n2})\n    if not rhs_into(t, y, p, out):\n"
-             "        raise ZeroDivisionError('mass matrix is not positive definite')\n    return out\n"]
-    if eqs.is_conservative:
-        body = "    return rhs_into(t, z, p, out)\n"
-    else:
-        parts.append(_power_source(eqs, n_params))
-        body = (f"    if not rhs_into(t, z, p, out):\n        return False\n    out[{n2}] = power(t, z, p)\n"
-                "    return True\n")
-    parts.append(f"@numba.njit({FIELD_SIGNATURE!r}, {_NUMPY_ERRORS})\ndef field(t, z, p, out):\n" + body)
-    return "\n\n".join(parts)
+    return field_module_around(decorate(into, options=_NUMPY_ERRORS), eqs, n_params)
