@@ -378,3 +378,30 @@ def test_numpy_assembly_matches_straight_line(make, monkeypatch):
     a = np.asarray(namespace["rhs"](0.0, y, model._pcall), dtype=float)
     b = np.asarray(model.dynamics(0.0, y, model._pcall), dtype=float)
     assert np.abs(a - b).max() < 1e-10 * max(1.0, np.abs(b).max())
+
+
+def test_taylor_reads_the_expanded_equations_without_deriving_the_structural_ones(monkeypatch):
+    """method="taylor" (a Taylor-series method: the whole right-hand side as one expression) on a structural
+    system takes System.expanded directly: the structural derivation it would not use never runs, and the result
+    is the expanded system's."""
+    pytest.importorskip("lagrange.integrate.taylor_run")
+    import lagrange.derive.structural as structural_module
+    from lagrange.integrate.taylor_run import taylor_ready
+
+    init = {**{f"q{i + 1}": 0.2 * (-1) ** i for i in range(6)}, **{f"q{i + 1}_dot": 0.0 for i in range(6)}}
+    e = n_link_pendulum(6, derivation="expanded")
+    if not taylor_ready(e.derived):
+        pytest.skip("no Taylor tape interpreter on this machine")
+    b = e.simulate(1.0, init, {"g": 9.81}, method="taylor", rtol=1e-12, atol=1e-12, n_points=3)
+
+    def refuse(system):
+        raise AssertionError("the structural derivation ran")
+
+    monkeypatch.setattr(structural_module, "structural_equations", refuse)
+    s = n_link_pendulum(6)
+    assert s.derivation == "structural"
+    a = s.simulate(1.0, init, {"g": 9.81}, method="taylor", rtol=1e-12, atol=1e-12, n_points=3)
+    assert np.allclose(a.y, b.y, rtol=0, atol=1e-12)
+    assert not s.expanded.is_structural and s.expanded.mass_matrix == e.derived.mass_matrix
+    with pytest.raises(AssertionError, match="structural derivation ran"):
+        s.derived  # noqa: B018 - every other method still reads the structural equations

@@ -183,9 +183,12 @@ def simulate(
     events = _events(events)
     t_eval = check_run_options((t0, t1), rtol=rtol, atol=atol, n_points=n_points, max_step=max_step,
                                t_eval=t_eval, step=step_options, adaptive=entry is None or entry.adaptive)
+    # a Taylor-series method reads the whole right-hand side as one expression: a structural system gives it its
+    # expanded equations (cached on disk) without deriving the structural form it would not use
+    taylor = entry is not None and entry.family == "Taylor series" and model is None
+    eqs = system.expanded if taylor and hasattr(system, "expanded") else system.derived
     if hasattr(system, "bindable"):  # values of declared parameters that cancel out: ignored, with a warning
-        params = system.bindable(params)
-    eqs = system.derived
+        params = system.bindable(params, eqs)
     check_model(model, eqs)
     switches = NumericModel.switches_of(eqs)
     if switches and fr.treatment == "regularize":

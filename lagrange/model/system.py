@@ -377,6 +377,21 @@ class System:
         return self._equations
 
     @property
+    def expanded(self) -> Equations:
+        """The equations in expanded form whatever :attr:`derivation` is: for ``"expanded"`` :attr:`derived`; for
+        ``"structural"`` the expanded fields of :attr:`derived` when it exists, else the expanded derivation (or
+        the on-disk derivation cache) directly, without deriving the structural form first — what a method that
+        needs the whole right-hand side as one expression (the Taylor tape, heyoka) reads."""
+        if self.derivation != "structural":
+            return self._equations
+        if "_equations" in self.__dict__:
+            return self._equations.expanded()
+        from ..codegen.derivation_cache import cached_equations
+        from ..derive.lagrange import lagrange_equations
+
+        return cached_equations(self, lagrange_equations)
+
+    @property
     def inputs(self) -> tuple:
         """The :class:`~lagrange.model.inputs.Input` symbols of the declaration, sorted by name: each needs a
         value at simulate time (``simulate(..., inputs={u: ...})``)."""
@@ -488,8 +503,9 @@ class System:
         out = set().union(*(_sympify(e).free_symbols for e in exprs))
         return frozenset(s for s in out if s != t and not s.name.startswith("delta_"))
 
-    def bindable(self, params: Mapping | None) -> dict:
-        """``params`` without the values of declared parameters that cancel out of the equations of motion.
+    def bindable(self, params: Mapping | None, equations: Equations | None = None) -> dict:
+        """``params`` without the values of declared parameters that cancel out of the equations of motion
+        (``equations``, default :attr:`derived`; :attr:`expanded` has the same parameters).
 
         Those values are accepted and ignored with one :class:`~lagrange.errors.UnusedParameterWarning` naming
         them (a user's full parameter dict needs no filtering). A name the declaration does not contain is
@@ -498,7 +514,7 @@ class System:
         from ..errors import UnusedParameterWarning
 
         params = dict(params or {})
-        used = {s.name for s in self._equations.numeric_parameters}
+        used = {s.name for s in (self._equations if equations is None else equations).numeric_parameters}
         declared = {s.name for s in self.declared_symbols if not is_input(s)}
         if self._declared_parameters is not None:
             declared |= {s.name for s in self._declared_parameters}
