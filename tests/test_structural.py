@@ -405,3 +405,23 @@ def test_taylor_reads_the_expanded_equations_without_deriving_the_structural_one
     assert not s.expanded.is_structural and s.expanded.mass_matrix == e.derived.mass_matrix
     with pytest.raises(AssertionError, match="structural derivation ran"):
         s.derived  # noqa: B018 - every other method still reads the structural equations
+
+
+def test_the_expanded_equations_are_derived_once_per_system(monkeypatch):
+    """With the derivation cache off, repeated Taylor runs of a structural system and its structural equations'
+    expanded fields share one expanded derivation (System.expanded), and a pickled System does not carry it."""
+    import lagrange.derive.lagrange as expanded_module
+
+    monkeypatch.setenv("LAGRANGE_DERIVATION_CACHE", "0")
+    real, calls = expanded_module.lagrange_equations, []
+
+    def counted(system):
+        calls.append(system)
+        return real(system)
+
+    monkeypatch.setattr(expanded_module, "lagrange_equations", counted)
+    s = n_link_pendulum(6)
+    first = s.expanded
+    assert s.expanded is first and s.derived.expanded() is first and s.derived.mass_matrix == first.mass_matrix
+    assert len(calls) == 1
+    assert "_expanded_equations" not in pickle.loads(pickle.dumps(s)).__dict__

@@ -393,11 +393,8 @@ class StructuralEquations(Equations):
             if replaced is not None:
                 parent, mapping, new_params = replaced
                 e = _replaced(parent.expanded(), mapping, new_params)
-            else:
-                from ..codegen.derivation_cache import cached_equations  # a re-run loads them from disk
-                from .lagrange import lagrange_equations
-
-                e = cached_equations(self._system, lagrange_equations)
+            else:  # derived once per System (System.expanded), loaded from the on-disk cache on a re-run
+                e = self._system._expanded_equations
             object.__setattr__(self, "_expanded", e)
         return e
 

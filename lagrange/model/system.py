@@ -379,13 +379,18 @@ class System:
     @property
     def expanded(self) -> Equations:
         """The equations in expanded form whatever :attr:`derivation` is: for ``"expanded"`` :attr:`derived`; for
-        ``"structural"`` the expanded fields of :attr:`derived` when it exists, else the expanded derivation (or
-        the on-disk derivation cache) directly, without deriving the structural form first — what a method that
-        needs the whole right-hand side as one expression (the Taylor tape, heyoka) reads."""
-        if self.derivation != "structural":
-            return self._equations
-        if "_equations" in self.__dict__:
-            return self._equations.expanded()
+        ``"structural"`` the expanded derivation (or the on-disk derivation cache), once per System and without
+        deriving the structural form first — what a method that needs the whole right-hand side as one
+        expression (the Taylor tape, heyoka) reads, and what the structural equations' own expanded fields are."""
+        return self._equations if self.derivation != "structural" else self._expanded_equations
+
+    def __getstate__(self) -> dict:
+        # a structural system's expanded equations are derived again (or loaded from the cache) where needed, not
+        # shipped with it (sweep workers, pickles), as the structural equations never ship theirs
+        return {k: v for k, v in self.__dict__.items() if k != "_expanded_equations"}
+
+    @cached_property
+    def _expanded_equations(self) -> Equations:
         from ..codegen.derivation_cache import cached_equations
         from ..derive.lagrange import lagrange_equations
 
