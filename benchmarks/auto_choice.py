@@ -6,17 +6,18 @@ tolerance, ``simulate(method=m)`` runs for ``auto`` and every adaptive method of
 request (a method that refuses it is listed as refused; RK23 and heyoka are left out), python backend, default
 loop. Times are CPU (``time.process_time``) and wall (``time.perf_counter``).
 
-* **first call** — the first run of the method in a process, measured in a fresh python process (this script
-  with ``--child``) in which no method has run before it: ``import``, the derivation, the python code
-  generation, the Taylor tape and loading the C interpreter are done first and not counted; the child then
-  warms what every method shares with one short RK23 run (``t_end/1000``: option checks, the initial state,
-  the python model, the Trajectory; not counted) and times the first call at each tolerance in turn. A survey
-  child first runs every other method (taylor, DOP853, RK45, LSODA, Radau, BDF) one after the other: the
-  methods whose first call there is within 3× of the fastest are the contenders; then ``auto`` and each
-  contender run alone in their own child, ``--trials`` times (5 in the full run), and the figure is the median
-  of those solo trials (the ratio of the fastest trials is given too: noise on this shared machine only slows
-  a run down). The other methods (which cannot be the best) show their survey figure (trials 0).
-  Auto's first call includes its own first-use costs and those of the method it picks.
+* **first call** — the first run of the method in a process, measured in a fresh python process (this script with
+  ``--child``) in which no method has run before it: ``import``, the derivation, the python code generation, the
+  Taylor tape (of a structural system's expanded equations: derived here too, as any taylor run stores them, so auto
+  finds them at hand) and loading the C interpreter are done first and not counted; the child then warms what every
+  method shares with one short RK23 run (``t_end/1000``: option checks, the initial state, the python model, the
+  Trajectory; not counted) and times the first call at each tolerance in turn. A survey child first runs every other
+  method (taylor, DOP853, RK45, LSODA, Radau, BDF) one after the other: the methods whose first call there is within
+  3× of the fastest are the contenders; then ``auto`` and each contender run alone in their own child, ``--trials``
+  times (5 in the full run), and the figure is the median of those solo trials (the ratio of the fastest trials is
+  given too: noise on this shared machine only slows a run down). The other methods (which cannot be the best) show
+  their survey figure (trials 0). Auto's first call includes its own first-use costs and those of the method it
+  picks.
 * **median** — in the main process, interleaved rounds of auto and the contenders (each round starts one
   method later, so no method always runs right after the same one): the median CPU and wall time of rounds
   1…R (round 0 is not timed); a method whose repeats have cost 5 s CPU stops after 3.
@@ -99,6 +100,16 @@ def _first_calls(system, problem, methods, tolerances, times) -> dict:
     return out
 
 
+def _tape(system) -> None:
+    """The Taylor tape of the expanded equations (shared setup, like the derivation): for a structural system
+    (the 10-link pendulum) its expanded equations are derived too, as a taylor run would — so auto finds them
+    at hand (``System.expanded_at_hand``) as it would on any later run of the model (on-disk cache)."""
+    try:
+        NumericModel.tape_for(system.expanded)
+    except LagrangeError:
+        pass
+
+
 def _child(name: str, methods: list[str], tolerances, quick: bool) -> dict:
     """The first calls of ``methods`` in a fresh python process (this script with ``--child``): JSON back."""
     cmd = [sys.executable, __file__, "--child", name, "--methods", ",".join(methods),
@@ -118,10 +129,7 @@ def _child_main(name: str, methods: list[str], tolerances, quick: bool) -> None:
     system = problem.build()
     eqs = system.derived
     NumericModel.build(eqs, problem.params)
-    try:
-        NumericModel.tape_for(eqs)
-    except LagrangeError:
-        pass
+    _tape(system)
     print(json.dumps(_first_calls(system, problem, methods, tolerances, problem.times())))
 
 
@@ -149,10 +157,7 @@ def bench_problem(name: str, *, quick: bool, tolerances, rounds: int, trials: in
     system = problem.build()
     eqs = system.derived
     _, build_cpu, _ = _clock(lambda: NumericModel.build(eqs, problem.params))
-    try:
-        NumericModel.tape_for(eqs)
-    except LagrangeError:
-        pass
+    _tape(system)
     times = problem.times()
     # first calls: fresh child processes (this one has not run any method yet either). Trial 0: every other
     # method in one child (which could be the best, their errors, the first calls of the rest); then each
@@ -324,7 +329,9 @@ def main() -> None:
         "scale. CPU = `time.process_time` of the process that ran the call; wall = `time.perf_counter`.", "",
         "What is counted: **first call** = the first `simulate` of that method in a fresh python process, after the "
         "shared setup (imports, derivation, python code generation, Taylor tape, C interpreter loaded: not "
-        "counted) and one short RK23 run that warms what every method shares (not counted). A survey process runs "
+        "counted; for the structural 10-link model its expanded equations as well, which auto weighs Taylor "
+        "with when they are at hand) and one short RK23 run that warms what every method shares (not counted). "
+        "A survey process runs "
         f"every other method in turn; those within {CONTENDER:g}× of the fastest first call there are the "
         "contenders; auto and each contender then run alone in their own fresh process, once per trial: median "
         "of the trials (trials 0 = the survey figure, for methods that cannot be the best). Each method's own "

@@ -22,6 +22,7 @@ import sympy as sp
 
 import lagrange as lg
 from lagrange import t
+from lagrange.codegen import cse as cse_module
 from lagrange.codegen import derivation_cache as dc
 from lagrange.codegen import numeric
 from lagrange.derive import lagrange as derive_module
@@ -54,7 +55,7 @@ def cache(tmp_path, monkeypatch):
     monkeypatch.setenv("LAGRANGE_CACHE_DIR", str(tmp_path))
     monkeypatch.setenv(dc.ENV_VAR, "1")
     calls = {"derive": 0, "fuse": 0}
-    real_derive, real_fuse = derive_module.lagrange_equations, numeric.fuse
+    real_derive, real_fuse = derive_module.lagrange_equations, cse_module.fuse
 
     def derive(system):
         calls["derive"] += 1
@@ -65,7 +66,7 @@ def cache(tmp_path, monkeypatch):
         return real_fuse(*args, **kwargs)
 
     monkeypatch.setattr(derive_module, "lagrange_equations", derive)
-    monkeypatch.setattr(numeric, "fuse", fuse)
+    monkeypatch.setattr(cse_module, "fuse", fuse)  # code generation imports it when it runs
     return tmp_path, calls
 
 
@@ -125,11 +126,11 @@ _CHILD = textwrap.dedent("""
     import lagrange as lg
     from lagrange.examples import n_link_pendulum
     if sys.argv[1] == "warm":  # derivation and CSE must not run at all: fail loudly if they do
-        import lagrange.codegen.numeric as numeric
+        import lagrange.codegen.cse as cse_module
         import lagrange.derive.lagrange as derive_module
         def forbidden(*args, **kwargs):
             raise AssertionError("derived or generated again")
-        derive_module.lagrange_equations = numeric.fuse = forbidden
+        derive_module.lagrange_equations = cse_module.fuse = forbidden
     x, y = lg.coordinates("x y")
     m, g, l = lg.parameters("m g l")
     rod = lg.System([x, y], bodies=[lg.Particle(m, (x, y))], V=m * g * y, constraints=[x**2 + y**2 - l**2])

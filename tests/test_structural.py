@@ -425,3 +425,56 @@ def test_the_expanded_equations_are_derived_once_per_system(monkeypatch):
     assert s.expanded is first and s.derived.expanded() is first and s.derived.mass_matrix == first.mass_matrix
     assert len(calls) == 1
     assert "_expanded_equations" not in pickle.loads(pickle.dumps(s)).__dict__
+
+
+def test_auto_weighs_the_taylor_method_only_when_the_expanded_equations_are_at_hand(monkeypatch, tmp_path):
+    """method="auto" on a structural system (auto × structural × the derivation cache): the Taylor tape needs the
+    expanded equations, so auto weighs the Taylor method only when they cost no derivation — derived already on
+    this System or stored on disk — and then runs it on them, number for number as method="taylor"; otherwise it
+    says why it did not, and never derives them to decide."""
+    from lagrange.codegen import derivation_cache as dc
+    from lagrange.integrate.taylor import available_interpreter
+
+    monkeypatch.setenv("LAGRANGE_CACHE_DIR", str(tmp_path / "cache"))
+    monkeypatch.setenv("LAGRANGE_DERIVATION_CACHE", "1")
+    init = {**{f"q{i + 1}": 0.2 * (-1) ** i for i in range(6)}, **{f"q{i + 1}_dot": 0.0 for i in range(6)}}
+    run = dict(rtol=1e-10, atol=1e-10, n_points=4)
+    s = n_link_pendulum(6)
+    assert s.derivation == "structural" and dc.stored_equations(s) is None and s.expanded_at_hand() is None
+    misses = dc.statistics()["derived"]["miss"]
+    first = s.simulate(1.0, init, {"g": 9.81}, method="auto", **run)
+    assert "_expanded_equations" not in s.__dict__ and dc.statistics()["derived"]["miss"] == misses  # not derived
+    assert first.method.startswith("DOP853") and "Taylor method is not weighed" in first.method
+    explicit = n_link_pendulum(6).simulate(1.0, init, {"g": 9.81}, method="DOP853", **run)
+    assert np.array_equal(first.y, explicit.y)
+    expanded = s.expanded  # derived (and stored): now at hand on this System and on disk for a new one
+    again = n_link_pendulum(6)
+    assert again.expanded_at_hand() == expanded and s.expanded_at_hand() is expanded
+    if available_interpreter() != "c":
+        return  # the python backend offers Taylor only with the C tape interpreter (or at rtol <= 1e-11)
+    for system in (s, n_link_pendulum(6)):
+        chosen = system.simulate(1.0, init, {"g": 9.81}, method="auto", **run)
+        direct = n_link_pendulum(6).simulate(1.0, init, {"g": 9.81}, method="taylor", **run)
+        assert chosen.method.startswith("taylor") and "auto: smooth" in chosen.method
+        assert np.array_equal(chosen.y, direct.y)
+    # a given model is of the structural equations: auto keeps to the methods that run it
+    model = s.compile({"g": 9.81})
+    given = s.simulate(1.0, init, {"g": 9.81}, method="auto", model=model, **run)
+    assert not given.method.startswith("taylor") and np.allclose(given.y, direct.y, atol=1e-7)
+
+
+def test_stored_equations_loads_without_deriving_or_counting_a_miss(monkeypatch, tmp_path):
+    from lagrange.codegen import derivation_cache as dc
+
+    monkeypatch.setenv("LAGRANGE_CACHE_DIR", str(tmp_path / "cache"))
+    monkeypatch.setenv("LAGRANGE_DERIVATION_CACHE", "1")
+    x = coordinates("x")
+    m, k = parameters("m k")
+    s = System([x], bodies=[Particle(m, (x,))], V=k * x**2 / 2)
+    before = dc.statistics()["derived"]
+    assert dc.stored_equations(s) is None and dc.statistics()["derived"] == before
+    derived = s.derived  # a miss: derived and stored
+    loaded = dc.stored_equations(System([x], bodies=[Particle(m, (x,))], V=k * x**2 / 2))
+    assert loaded == derived and dc.statistics()["derived"]["hit"] == before["hit"] + 1
+    monkeypatch.setenv("LAGRANGE_DERIVATION_CACHE", "0")
+    assert dc.stored_equations(s) is None

@@ -68,7 +68,7 @@ from .cache import cache_dir, read_verified, write_sealed
 
 __all__ = ["ENV_VAR", "MAX_ENTRIES_VAR", "prune",
            "enabled", "environment", "declaration_key", "equations_fingerprint", "cached_equations",
-           "cached_source", "cached_arrays", "statistics"]
+           "stored_equations", "cached_source", "cached_arrays", "statistics"]
 
 #: environment variable that turns the cache off (``0``, ``off``, ``false``, ``no``)
 ENV_VAR = "LAGRANGE_DERIVATION_CACHE"
@@ -457,16 +457,9 @@ def cached_equations(system, derive: Callable) -> Equations:
     if key is None:
         return derive(system)
     path = _entry_path("derived", key, ".pkl")
-    payload = _read(path, key)
-    if payload is not None:
-        try:
-            eqs, fingerprint = pickle.loads(payload)  # noqa: S301 - our own entry, authenticated (HMAC)
-        except Exception:  # noqa: BLE001 - an entry that does not load is rebuilt
-            eqs = fingerprint = None
-        if isinstance(eqs, Equations) and isinstance(fingerprint, str) and eqs.coordinates == system.coordinates:
-            _remember(eqs, fingerprint)
-            _count("derived", "hit")
-            return eqs
+    eqs = _load_equations(system, key, path)
+    if eqs is not None:
+        return eqs
     _refused_or_missing("derived", path)
     eqs = derive(system)
     # equations derived from this declaration in this environment are named by its key: printing their
@@ -480,6 +473,32 @@ def cached_equations(system, derive: Callable) -> Equations:
             return eqs
         _write(path, key, payload)
     return eqs
+
+
+def stored_equations(system) -> Equations | None:
+    """The equations derived from ``system``'s declaration when the derivation cache holds an intact entry for
+    it (what :func:`cached_equations` would load), else None: nothing is derived or stored, and a miss is not
+    counted. Lets a caller use equations that are at hand without paying for a derivation (``method="auto"``
+    on a structural system weighs the Taylor method only when the expanded equations are)."""
+    key = declaration_key(system) if enabled() else None
+    return None if key is None else _load_equations(system, key, _entry_path("derived", key, ".pkl"))
+
+
+def _load_equations(system, key: str, path: Path | None) -> Equations | None:
+    """The equations of the entry at ``path`` (counted as a hit), or None when it is missing or does not
+    authenticate, match ``key`` or load."""
+    payload = _read(path, key)
+    if payload is None:
+        return None
+    try:
+        eqs, fingerprint = pickle.loads(payload)  # noqa: S301 - our own entry, authenticated (HMAC)
+    except Exception:  # noqa: BLE001 - an entry that does not load is rebuilt
+        return None
+    if isinstance(eqs, Equations) and isinstance(fingerprint, str) and eqs.coordinates == system.coordinates:
+        _remember(eqs, fingerprint)
+        _count("derived", "hit")
+        return eqs
+    return None
 
 
 def cached_source(eqs: Equations, options: str, generate: Callable[[], str]) -> str:

@@ -35,8 +35,7 @@ import sympy as sp
 from ..derive.equations import Equations
 from ..errors import BackendError, ParameterError, SingularMassMatrixError, SpecError
 from ..model.coordinates import coordinate_name
-from .cse import fuse, numeric_arguments, rename_map
-from .source import rhs_source
+from .cse import numeric_arguments, rename_map
 
 __all__ = ["NumericModel", "ConstraintFunctions", "compile_equations", "bind_parameters", "BACKENDS"]
 
@@ -358,6 +357,11 @@ class NumericModel:
 
     @cached_property
     def _mass_only(self) -> Callable:
+        at = self.source.find("\ndef mass(t, y, p):") if self.backend == "python" else -1
+        if at >= 0:  # the generated module's own M (same CSE): nothing to print or lambdify
+            namespace: dict = {"math": math}
+            exec(compile(self.source[at + 1:], "<lagrange mass>", "exec"), namespace)  # noqa: S102 - generated
+            return namespace["mass"]
         ren = rename_map(self.equations)
         tt, ys, ps = numeric_arguments(self.equations)
         # rows of floats from the math module, as the generated code uses: lambdify's numpy namespace imports
@@ -722,6 +726,8 @@ def _build_columns(eqs: Equations, n_params: int) -> tuple[Callable, int]:
     from .numba_backend import load_cached
 
     def generate() -> str:
+        from .cse import fuse
+
         src, n_calls = columns_source(fuse(eqs)[0], n_params=n_params)
         return (f"N_CALLS = {n_calls}\n\n\n@numba.njit(cache=True, error_model='numpy', "
                 f"pipeline_class=NoAliasCompiler)\n{src}")
@@ -815,9 +821,12 @@ def _generate_source(eqs: Equations, backend: str, n_params: int, constraint_rhs
         from .structural_source import structural_module_source
 
         return structural_module_source(eqs, backend, n_params, constraint_rhs)
+    from .cse import fuse
+    from .source import rhs_source
+
     fused, _ = fuse(eqs, constraint_rhs=constraint_rhs, printable=True)
-    if backend == "python":
-        return rhs_source(fused, n_params=n_params, flavour="python")
+    if backend == "python":  # with mass(t, y, p): M alone, for mass_matrix (the initial gimbal-lock check)
+        return rhs_source(fused, n_params=n_params, flavour="python", with_mass=True)
     if eqs.m:
         return rhs_source(fused, n_params=n_params, flavour="numba")
     # the module also holds `field`, called by the compiled integrator loops (lagrange.codegen.rk_source)

@@ -164,7 +164,8 @@ def _constrained_lines(n: int, m: int, upper: dict, A: dict, B: dict | None = No
     return lines, acc, lam
 
 
-def rhs_source(fused: FusedExpressions, *, n_params: int, flavour: str = "python", name: str = "rhs") -> str:
+def rhs_source(fused: FusedExpressions, *, n_params: int, flavour: str = "python", name: str = "rhs",
+               with_mass: bool = False) -> str:
     """Source text of ``rhs(t, y, p)``.
 
     ``flavour="python"`` unpacks ``y.tolist()`` (fast Python floats) and returns a list;
@@ -173,6 +174,9 @@ def rhs_source(fused: FusedExpressions, *, n_params: int, flavour: str = "python
     allocating and returning False instead of raising on a mass matrix that is not positive definite (the
     body of the numba module that the compiled integrator loops call, :mod:`lagrange.codegen.rk_source`).
     With constraints the result is ``[q̇, q̈, λ]`` (length 2n + m), without them ``[q̇, q̈]``.
+    ``with_mass=True`` (python flavour, no constraints) appends ``mass(t, y, p)``: M as a nested list of rows, from
+    the same printed lines (only the temporaries M needs), for
+    :meth:`~lagrange.codegen.numeric.NumericModel.mass_matrix`.
     """
     n = fused.n
     if flavour == "numba_status" and fused.m:
@@ -187,8 +191,9 @@ def rhs_source(fused: FusedExpressions, *, n_params: int, flavour: str = "python
     else:
         body += [f"y{i} = y[{i}]" for i in range(2 * n)]
         body += [f"p{k} = p[{k}]" for k in range(n_params)]
-    body += [f"{s} = {print_expr(e)}" for s, e in fused.temporaries]
-    body += [f"a{i}_{j} = {print_expr(e)}" for (i, j), e in fused.mass_upper.items()]
+    temporaries = [(str(s), f"{s} = {print_expr(e)}") for s, e in fused.temporaries]
+    mass_lines = [f"a{i}_{j} = {print_expr(e)}" for (i, j), e in fused.mass_upper.items()]
+    body += [line for _, line in temporaries] + mass_lines
     body += [f"b{i} = {print_expr(e)}" for i, e in enumerate(fused.forcing)]
     if fused.m:
         body += [f"k{r}_{j} = {print_expr(e)}" for (r, j), e in fused.constraint_matrix.items()]
@@ -207,6 +212,10 @@ def rhs_source(fused: FusedExpressions, *, n_params: int, flavour: str = "python
         outs = ys[n:] + xs
     if flavour == "python":
         body.append(f"return [{', '.join(outs)}]")
+        if with_mass and not fused.m:  # (with constraints the a{i}_{j} are M + AᵀA, the augmented matrix)
+            head = body[:2 if ps else 1]
+            return (_function(name, body) + "\n\n"
+                    + _function("mass", _mass_body(n, head, temporaries, mass_lines, fused.mass_upper)))
     elif flavour == "numba_status":
         body += [f"out[{k}] = {v}" for k, v in enumerate(outs)] + ["return True"]
         return f"def {name}(t, y, p, out):\n" + "\n".join("    " + line for line in body) + "\n"
@@ -214,4 +223,32 @@ def rhs_source(fused: FusedExpressions, *, n_params: int, flavour: str = "python
         body.append(f"out = np.empty({len(outs)})")
         body += [f"out[{k}] = {v}" for k, v in enumerate(outs)]
         body.append("return out")
+    return _function(name, body)
+
+
+def _function(name: str, body: list[str]) -> str:
     return f"def {name}(t, y, p):\n" + "\n".join("    " + line for line in body) + "\n"
+
+
+_NAME = re.compile(r"[A-Za-z_]\w*")
+
+
+def _mass_body(n: int, head: list[str], temporaries: list[tuple[str, str]], mass_lines: list[str],
+               upper: dict) -> list[str]:
+    """The body of ``mass(t, y, p)``: the unpacking ``head``, the temporaries the entries of M use (found by
+    walking the CSE back from them), the entries, the rows (structural zeros as 0.0, the lower triangle by
+    symmetry)."""
+    needed = {w for line in mass_lines for w in _NAME.findall(line.partition(" = ")[2])}
+    kept = []
+    for name, line in reversed(temporaries):
+        if name in needed:
+            kept.append(line)
+            needed |= set(_NAME.findall(line.partition(" = ")[2]))
+    head = [h.replace(" = y.tolist()", " = y") for h in head]  # called with lists (mass_matrix)
+
+    def entry(i, j):
+        key = (min(i, j), max(i, j))
+        return f"a{key[0]}_{key[1]}" if key in upper else "0.0"
+
+    rows = ", ".join("[" + ", ".join(entry(i, j) for j in range(n)) + "]" for i in range(n))
+    return head + kept[::-1] + mass_lines + [f"return [{rows}]"]

@@ -8,7 +8,9 @@ bound cannot rule stiffness out (``benchmarks/auto_choice.py`` measures the deci
 1. **Candidates.** Only the adaptive methods of :data:`~lagrange.integrate.registry.METHODS` whose entry covers
    everything the request needs (events, holonomic and non-holonomic constraints, friction switches, rough
    constraints, constant or time-varying inputs, dense output) are considered; the Taylor method also needs
-   analytic unconstrained equations and a tape interpreter (:func:`~lagrange.integrate.taylor_run.taylor_ready`).
+   analytic unconstrained equations and a tape interpreter (:func:`~lagrange.integrate.taylor_run.taylor_ready`),
+   and the expanded equations (a structural system's are weighed only when at hand, in memory or in the on-disk
+   derivation cache: :meth:`lagrange.System.expanded_at_hand`; the run then uses them).
 2. **Stiffness estimate.** The Jacobian :math:`J = \partial f/\partial y` of the compiled right-hand side at
    the initial state by forward differences (:func:`difference_jacobian`: 2n + 1 evaluations; when the
    equations are not known to be analytic — no Taylor tape — each column is checked against a ``sign()``
@@ -283,7 +285,7 @@ class _Context:
 
 
 def choose(eqs, fun: Callable | None, t0: float, y0, *, t_end: float, rtol: float, backend: str,
-           needs: dict[str, str], projection: bool = False) -> tuple[str, str]:
+           needs: dict[str, str], projection: bool = False, taylor_equations=None) -> tuple[str, str]:
     """The method for ``method="auto"`` and the reason (see the module docstring).
 
     Parameters
@@ -294,6 +296,10 @@ def choose(eqs, fun: Callable | None, t0: float, y0, *, t_end: float, rtol: floa
     rtol : the run's relative tolerance; backend : the model's backend
     needs : the registry features the request needs (:func:`lagrange.integrate.run._needs`)
     projection : holonomic constraints kept by projection (prefer a method that projects)
+    taylor_equations : for structural ``eqs``, the same system's expanded equations when they are at hand
+        (:meth:`lagrange.System.expanded_at_hand`): the Taylor tape is built from them. Without them a
+        structural system is not offered the Taylor method (its tape needs the expanded equations, whose
+        derivation grows about as n³) and the reason says so.
 
     Raises
     ------
@@ -304,7 +310,10 @@ def choose(eqs, fun: Callable | None, t0: float, y0, *, t_end: float, rtol: floa
     if not allowed:  # cannot happen with today's table (DOP853 supports everything); refuse by the registry
         registry.check_supported(registry.get("DOP853"), needs)
     ctx = _Context(eqs.n, abs(float(t_end) - float(t0)), float(rtol), backend, projection)
-    taylor = _taylor_info(eqs, allowed, ctx)
+    structural = "taylor" in allowed and eqs.is_structural
+    taylor = _taylor_info(taylor_equations if structural else eqs, allowed, ctx)
+    unweighed = ("; the Taylor method is not weighed: this structural system's expanded equations are not derived "
+                 "yet (System.expanded derives them)") if structural and taylor_equations is None else ""
     # analytic equations (their tape exists): no sign() jump to look for in the differences
     found = None if fun is None else difference_jacobian(fun, t0, y0, smooth=taylor is not None)
     estimate = ""
@@ -313,7 +322,8 @@ def choose(eqs, fun: Callable | None, t0: float, y0, *, t_end: float, rtol: floa
         if bound * ctx.horizon > STIFF_STEPS:  # the bound cannot rule stiffness out: the eigenvalues decide
             stiffness = _eigen_estimate(*found)
             if stiffness is not None and stiffness.is_stiff(ctx.horizon):
-                return _stiff_choice(stiffness, taylor, allowed, ctx)
+                name, why = _stiff_choice(stiffness, taylor, allowed, ctx)
+                return name, why + (unweighed if name != "taylor" else "")
             if stiffness is not None:
                 estimate = f" (fastest decay {stiffness.decay:.3g}/time over {ctx.horizon:g}: not stiff)"
         else:
@@ -323,7 +333,7 @@ def choose(eqs, fun: Callable | None, t0: float, y0, *, t_end: float, rtol: floa
                  else "needs fewer operations than DOP853 at this tolerance")
         return "taylor", f"smooth{estimate}: the Taylor method (order {taylor[0]}) {where}"
     name = _first(("DOP853", "RK45", "LSODA", "Radau"), allowed)
-    return name, f"non-stiff{estimate}: {name}, the most efficient explicit method the request allows"
+    return name, f"non-stiff{estimate}: {name}, the most efficient explicit method the request allows{unweighed}"
 
 
 def _first(preferred: tuple[str, ...], allowed: tuple[str, ...]) -> str:
@@ -331,8 +341,9 @@ def _first(preferred: tuple[str, ...], allowed: tuple[str, ...]) -> str:
 
 
 def _taylor_info(eqs, allowed: tuple[str, ...], ctx: _Context) -> tuple[int, str, int] | None:
-    """``(order, interpreter, tape size)`` when the Taylor method may run this request, else None."""
-    if "taylor" not in allowed or eqs.is_structural:  # the tape needs the expanded equations: set-up O(n³)
+    """``(order, interpreter, tape size)`` when the Taylor method may run this request on ``eqs`` (expanded
+    equations, or None), else None."""
+    if "taylor" not in allowed or eqs is None or eqs.is_structural:  # the tape needs the expanded equations
         return None
     from ..codegen.numeric import NumericModel
     from .taylor import available_interpreter, taylor_order

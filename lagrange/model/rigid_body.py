@@ -123,7 +123,7 @@ class RigidBody:
         w = self.angular_velocity
         v0 = time_derivative(self.origin)
         T = sp.Rational(1, 2) * self.mass * (v0.T * v0)[0, 0] + sp.Rational(1, 2) * (w.T * self.inertia * w)[0, 0]
-        if any(c != 0 for c in self.com):
+        if any(c != 0 for c in self.com) and any(c != 0 for c in v0):  # (a fixed origin: no cross term)
             v0_body = self.R.T * v0
             T += self.mass * (v0_body.T * w.cross(self.com))[0, 0]
         return T

@@ -63,6 +63,14 @@ def _sym(expr, what: str, problems: list):
         return sp.S.Zero
 
 
+def _derive_expanded(system: System) -> Equations:
+    """:func:`lagrange.derive.lagrange.lagrange_equations`, imported when a derivation is due (a warm re-run
+    loads the equations from the derivation cache and never imports the derivation)."""
+    from ..derive.lagrange import lagrange_equations
+
+    return lagrange_equations(system)
+
+
 class System:
     """A mechanical system declared the way Wells does.
 
@@ -153,7 +161,7 @@ class System:
         description: str = "",
         derivation: str = "auto",
     ):
-        from ..derive.structural import DERIVATIONS, auto_structural, structural_refusal
+        from ..derive.derivation_choice import DERIVATIONS, auto_structural, structural_refusal
 
         if derivation not in DERIVATIONS:
             raise DeclarationError(f"derivation={derivation!r} is not one of {', '.join(map(repr, DERIVATIONS))}")
@@ -217,11 +225,11 @@ class System:
         if T is None and not bodies:
             problems.append("no kinetic energy: give T or bodies (e.g. Particle(m, (x, y)))")
         T_given = prep(0 if T is None else T, "T")
-        refusal = structural_refusal(T_given, bodies)
+        wanted = derivation == "structural" or (derivation == "auto" and auto_structural(len(coords), bodies))
+        refusal = structural_refusal(T_given, bodies) if wanted else None  # (it builds each rotation matrix)
         if derivation == "structural" and refusal is not None:
             problems.append(f"derivation='structural' is not available: {refusal}; use derivation='expanded'")
-        structural = refusal is None and (derivation == "structural"
-                                          or (derivation == "auto" and auto_structural(len(coords), bodies)))
+        structural = wanted and refusal is None
         kinematic_bodies = tuple(b.subs(presc) for b in bodies) if presc and structural else bodies
         T_total = None
         if not structural:  # the structural path never builds the whole T (built on first access of .T)
@@ -367,9 +375,8 @@ class System:
             return structural_equations(self)
         # loaded from the on-disk derivation cache when this declaration was derived before (same versions)
         from ..codegen.derivation_cache import cached_equations
-        from ..derive.lagrange import lagrange_equations
 
-        return cached_equations(self, lagrange_equations)
+        return cached_equations(self, _derive_expanded)
 
     @property
     def derived(self) -> Equations:
@@ -384,6 +391,22 @@ class System:
         expression (the Taylor tape, heyoka) reads, and what the structural equations' own expanded fields are."""
         return self._equations if self.derivation != "structural" else self._expanded_equations
 
+    def expanded_at_hand(self) -> Equations | None:
+        """:attr:`expanded` when it costs no derivation — always for ``"expanded"``; for ``"structural"`` when
+        this System has them already or the on-disk derivation cache holds them (loaded and kept) — else None.
+        ``method="auto"`` weighs the Taylor method on a structural system only then: deriving the expanded
+        equations of a large chain costs more than the run it could save."""
+        if self.derivation != "structural":
+            return self._equations
+        if "_expanded_equations" not in self.__dict__:
+            from ..codegen.derivation_cache import stored_equations
+
+            stored = stored_equations(self)
+            if stored is None:
+                return None
+            self.__dict__["_expanded_equations"] = stored
+        return self._expanded_equations
+
     def __getstate__(self) -> dict:
         # a structural system's expanded equations are derived again (or loaded from the cache) where needed, not
         # shipped with it (sweep workers, pickles), as the structural equations never ship theirs
@@ -392,9 +415,8 @@ class System:
     @cached_property
     def _expanded_equations(self) -> Equations:
         from ..codegen.derivation_cache import cached_equations
-        from ..derive.lagrange import lagrange_equations
 
-        return cached_equations(self, lagrange_equations)
+        return cached_equations(self, _derive_expanded)
 
     @property
     def inputs(self) -> tuple:
@@ -627,7 +649,7 @@ class System:
 
 
 def _kinematics_of(b) -> list:
-    from ..derive.structural import _kinematic_expressions
+    from ..derive.derivation_choice import _kinematic_expressions
 
     return [sp.sympify(e) for e in _kinematic_expressions(b)]
 

@@ -16,7 +16,6 @@ forgotten force, a wrong sign in P or a bad integration shows up there.
 
 from __future__ import annotations
 
-import csv
 from dataclasses import dataclass, field
 from functools import cached_property
 from pathlib import Path
@@ -233,6 +232,8 @@ class Trajectory:
         lam_names = [f"lambda_{name}" for name in self.model.equations.constraint_names]
         lam = self.multipliers if lam_names else np.empty((len(self.t), 0))
         with path.open("w", newline="") as fh:
+            import csv
+
             w = csv.writer(fh)
             w.writerow(["t", *self.names, *(u.name for u in self.model.equations.inputs), "energy", "jacobi",
                         "power_balance", *lam_names])
