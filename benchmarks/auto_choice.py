@@ -262,21 +262,32 @@ def _table(rows: list[dict]) -> str:
             out += [f"auto / best other, CPU: first call ×{rf:.2f} (fastest trials ×{rfast:.2f}; best: {bf}), "
                     f"median ×{rm:.2f} (best: {bm})", ""]
         out += [f"auto's label: `{a['label']}`", "",
-                "| method | first call CPU | first call wall | trials | median CPU | median wall | error |",
-                "|---|---|---|---|---|---|---|"]
+                "| method | first call CPU | first call wall | trials | first calls: fastest – slowest trial (CPU) | "
+                "median CPU | median wall | error |",
+                "|---|---|---|---|---|---|---|---|"]
         for m, s in st.items():
             if s["refused"]:
-                out.append(f"| {m} | {s['refused']} | | | | | |")
+                out.append(f"| {m} | {s['refused']} | | | | | | |")
                 continue
             if s["first"] is None:
                 continue
             med_c = statistics.median(s["cpu"]) if s["cpu"] else None
             med_w = statistics.median(s["wall"]) if s["wall"] else None
             err = f"{s['error']:.1e}" if s["error"] is not None else "—"
-            out.append(f"| {m} | {_fmt(s['first'][0])} | {_fmt(s['first'][1])} | {s['trials']} | {_fmt(med_c)} | "
-                       f"{_fmt(med_w)} | {err} |")
+            cpus = [x[0] for x in s["first_samples"]]
+            spread = f"{_fmt(min(cpus))} – {_fmt(max(cpus))}" if cpus else "—"
+            out.append(f"| {m} | {_fmt(s['first'][0])} | {_fmt(s['first'][1])} | {s['trials']} | {spread} | "
+                       f"{_fmt(med_c)} | {_fmt(med_w)} | {err} |")
         out.append("")
     return "\n".join(out)
+
+
+#: how to read the first-call columns (printed under the summary)
+READING = ("How to read the first calls: noise on this shared machine only slows a run down, and the first "
+           "calls of one and the same method in fresh processes are bimodal here (the fastest – slowest column: "
+           "e.g. 18.7–30.1 ms for the 5-link Taylor run, no garbage collection during the call), so a median of a "
+           "handful of trials lands in either mode by chance. The fastest trials' ratio is the estimate of what "
+           "auto's first call costs over the best method's; the median of the trials is shown beside it.")
 
 
 def _summary(rows: list[dict]) -> str:
@@ -306,9 +317,18 @@ def main() -> None:
     ap.add_argument("--child", help=argparse.SUPPRESS)
     ap.add_argument("--methods", help=argparse.SUPPRESS)
     ap.add_argument("--rtols", help=argparse.SUPPRESS)
+    ap.add_argument("--render", action="store_true",
+                    help="rewrite --out from its .json (every sample) without measuring: the run's header is kept")
     args = ap.parse_args()
     if args.child:
         _child_main(args.child, args.methods.split(","), tuple(float(r) for r in args.rtols.split(",")), args.quick)
+        return
+    if args.render:
+        out = Path(args.out)
+        rows = json.loads(out.with_suffix(".json").read_text())
+        head = out.read_text().split("\n## Summary", 1)[0]
+        out.write_text("\n".join([head, "## Summary", "", _summary(rows), "", READING, "", "## Per problem", "",
+                                  _table(rows)]))
         return
     names = args.problem or ["double_pendulum", "kepler", "nlink", "stiff", "top", "stick_slip", "greenspan"]
     if not args.quick and not args.problem:
@@ -339,7 +359,7 @@ def main() -> None:
         "interleaved rounds of auto and the contenders in one process, each round starting one method later, "
         f"round 0 not timed; a method whose repeats cost {ROUND_BUDGET:g} s CPU stops after 3. **Decision** = "
         "`lagrange.integrate.auto.choose` alone on a built model (median of 21 calls).", "",
-        "## Summary", "", _summary(rows), "", "## Per problem", "", _table(rows)])
+        "## Summary", "", _summary(rows), "", READING, "", "## Per problem", "", _table(rows)])
     Path(args.out).write_text(text)
     Path(args.out).with_suffix(".json").write_text(json.dumps(rows, indent=1))  # every sample
     print(_summary(rows))

@@ -5,7 +5,9 @@ when only ``auto`` changed (issue #23 item 3: it now picks the Taylor method on 
 stick-slip belt, where the report still showed Radau and LSODA), this script re-runs just the ``auto`` curve
 (the stiff problem) and the ``python_auto`` time-to-first-result route (the non-conservative problems) with the
 same machinery and settings (:func:`lagrange.bench.runner.run_curve`, :func:`lagrange.bench.first_result.
-first_result`, derivation cache off as there), merges them into ``benchmarks/results/workprecision.json`` and
+first_result`, derivation cache off as there) — and, in the same run beside them, the python-backend curve and
+first-result route of the method auto picks (rows measured at different times are not comparable on this
+shared machine) — merges them into ``benchmarks/results/workprecision.json`` and
 re-renders ``workprecision.md``, the figures and ``README_section.md`` from it. Each re-measured row's note says
 so and when: its times come from a later run than the other rows (compare them across rows only roughly).
 
@@ -35,13 +37,20 @@ from lagrange.bench.suite import write_report  # noqa: E402
 RESULTS = Path(__file__).parent / "results"
 
 
+#: the first-result route of the method auto picks (python backend, empty caches like ``python_auto``)
+PICK_ROUTE = {"taylor": "taylor", "DOP853": "python"}
+
+
 def remeasure(data: dict, name: str, stamp: str) -> list[str]:
-    """Replace the auto rows of problem ``name`` in ``data``; returns what was replaced."""
+    """Replace the auto rows of problem ``name`` in ``data``, and beside them, in the same run, the rows of the
+    method auto picks (the python-backend curve and first-result route of that method): rows measured at
+    different times are not comparable on this shared machine. Returns what was replaced."""
     problem = get_problem(name)
     entry = next(p for p in data["problems"] if p["name"] == name)
     system = problem.build()
     ref = reference_solution(problem, system)
     done = []
+    picked = None
     for i, c in enumerate(entry["curves"]):
         if c["method"] != "auto":
             continue
@@ -51,14 +60,34 @@ def remeasure(data: dict, name: str, stamp: str) -> list[str]:
         new["note"] = "; ".join(filter(None, [new["note"], stamp]))
         entry["curves"][i] = new
         done.append(f"{name}: curve {c['label']!r}")
-    for i, f in enumerate(entry["first_result"]):
+        picked = system.simulate((0.0, problem.t_end), problem.initial, problem.params, method="auto", rtol=1e-9,
+                                 atol=1e-9 * problem.atol_scale, **problem.options).method.split(" ")[0]
+        for j, other in enumerate(entry["curves"]):
+            if (other["method"] == picked and other["kind"] == "simulate" and other["backend"] == "python"
+                    and not other["loop"] and "regularized" not in other["label"]):
+                spec = MethodSpec(other["label"], kind="simulate", method=picked, backend="python", loop=None)
+                new = _curve_data(run_curve(problem, system, spec, ref, TOLERANCES, repeats=3, budget=0.5, stop=2.5))
+                new["note"] = "; ".join(filter(None, [new["note"], stamp + " (beside auto)"]))
+                entry["curves"][j] = new
+                done.append(f"{name}: curve {other['label']!r} (auto's pick)")
+    for f in entry["first_result"]:
         if f["route"] != "python_auto":
             continue
-        r = first_result(problem, "python_auto", ref.states)
-        entry["first_result"][i] = {"route": r.route, "label": f["label"], "derive": _f(r.derive),
-                                    "compile": _f(r.compile), "integrate": _f(r.integrate), "total": _f(r.total),
-                                    "error": _f(r.error), "note": "; ".join(filter(None, [r.note, stamp]))}
-        done.append(f"{name}: first result {f['label']!r} ({r.note})")
+        routes = ["python_auto", None]  # None: the route of auto's pick, known once auto has run
+        for route in routes:  # auto and its pick's route, one after the other
+            if route is None:
+                route = PICK_ROUTE.get(picked or "")
+                if route is None or all(g["route"] != route for g in entry["first_result"]):
+                    break
+            r = first_result(problem, route, ref.states)
+            picked = r.note if route == "python_auto" else picked
+            k = next(j for j, g in enumerate(entry["first_result"]) if g["route"] == route)
+            tag = stamp if route == "python_auto" else stamp + " (beside auto)"
+            entry["first_result"][k] = {"route": r.route, "label": entry["first_result"][k]["label"],
+                                        "derive": _f(r.derive), "compile": _f(r.compile),
+                                        "integrate": _f(r.integrate), "total": _f(r.total), "error": _f(r.error),
+                                        "note": "; ".join(filter(None, [r.note, tag]))}
+            done.append(f"{name}: first result {route!r} ({r.note})")
     return done
 
 

@@ -18,7 +18,7 @@ import numpy as np
 from ..codegen.numeric import NumericModel
 from ..errors import IntegrationError, LagrangeError, MethodError
 from ..results.trajectory import Trajectory
-from . import registry
+from . import auto, registry  # auto eagerly: its import would land in the first method="auto" call
 from .options import _DEPRECATED as _UNSET
 from .options import StepOptions, check_run_options, merge_deprecated
 from .prepare import GimbalLockWarning, check_model, initial_state, model_for, split_inputs
@@ -43,8 +43,6 @@ def choose_method(eqs, params=None, t_span=(0.0, 1.0), y0=None, rtol: float | No
     if params is not None and y0 is not None:
         built = _decision_model(eqs, params, None, {}, None)
         fun = None if built is None else built.fun
-    from . import auto  # loaded for method="auto" only
-
     return auto.choose(eqs, fun, float(t_span[0]), y0, t_end=float(t_span[1]),
                        rtol=1e-9 if rtol is None else rtol, backend=backend or "python", needs=needs)
 
@@ -202,8 +200,6 @@ def simulate(
     needs = _needs(eqs, events, switches, schedule) | ({"dense_output": ""} if t_eval is not None else {})
     why, bound = "", False
     if entry is None:
-        from . import auto  # loaded for method="auto" only
-
         decided = _decision_model(eqs, params, model, constants, schedule)
         # a structural system's expanded equations, when at hand, let auto weigh the Taylor method (not with a
         # given model: that model is of the structural equations)
