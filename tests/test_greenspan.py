@@ -55,7 +55,7 @@ def test_fixed_coordinate_and_non_rational_potential():
     assert np.ptp(E) / abs(E[0]) < 1e-9
 
 
-@pytest.mark.parametrize("number", [1, 5])
+@pytest.mark.parametrize("number", [pytest.param(1, marks=pytest.mark.slow), 5])  # example 1: 33 s, in the slow run
 def test_rigid_and_molecular_models_agree(number):
     """Over t = 5 the 5-DOF rigid top and the 4-particle molecular top differ only by the elastic
     compliance of the stiff pair potential (~1e-5 in position)."""

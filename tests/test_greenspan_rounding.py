@@ -42,6 +42,7 @@ def test_energy_per_step_at_the_rounding_floor(top, offset):
     assert res.energy_drift <= 0.05 * scale and res.energy_drift_ulps < 0.05  # what the result reports
 
 
+@pytest.mark.slow  # 31 s: in the slow run, which CI runs too
 def test_translation_changes_nothing_and_the_centre_stays_fixed(top):
     """The same run a distance 100 from the origin follows the same trajectory relative to its centre of mass
     (to the rounding of the translated initial state), the horizontal centre of mass of the homogeneous top
