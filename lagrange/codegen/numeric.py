@@ -357,11 +357,11 @@ class NumericModel:
 
     @cached_property
     def _mass_only(self) -> Callable:
-        at = self.source.find("\ndef mass(t, y, p):") if self.backend == "python" else -1
-        if at >= 0:  # the generated module's own M (same CSE): nothing to print or lambdify
-            namespace: dict = {"math": math}
-            exec(compile(self.source[at + 1:], "<lagrange mass>", "exec"), namespace)  # noqa: S102 - generated
-            return namespace["mass"]
+        # the python module's own mass(t, y, p) (same CSE, compiled with rhs): nothing to print or lambdify
+        raw = getattr(self.dynamics, "_lagrange_raw", self.dynamics)
+        mass = raw.__globals__.get("mass") if self.backend == "python" else None
+        if mass is not None:
+            return mass
         ren = rename_map(self.equations)
         tt, ys, ps = numeric_arguments(self.equations)
         # rows of floats from the math module, as the generated code uses: lambdify's numpy namespace imports

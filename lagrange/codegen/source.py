@@ -184,10 +184,9 @@ def rhs_source(fused: FusedExpressions, *, n_params: int, flavour: str = "python
     body: list[str] = []
     ys = [f"y{i}" for i in range(2 * n)]
     ps = [f"p{k}" for k in range(n_params)]
-    if flavour == "python":
-        body.append(f"{', '.join(ys)}, = y.tolist()" if ys else "pass")
-        if ps:
-            body.append(f"{', '.join(ps)}, = p")
+    if flavour == "python":  # the unpacking, kept as the head of mass() too
+        head = [f"{', '.join(ys)}, = y.tolist()" if ys else "pass"] + ([f"{', '.join(ps)}, = p"] if ps else [])
+        body += head
     else:
         body += [f"y{i} = y[{i}]" for i in range(2 * n)]
         body += [f"p{k} = p[{k}]" for k in range(n_params)]
@@ -213,7 +212,6 @@ def rhs_source(fused: FusedExpressions, *, n_params: int, flavour: str = "python
     if flavour == "python":
         body.append(f"return [{', '.join(outs)}]")
         if with_mass and not fused.m:  # (with constraints the a{i}_{j} are M + AᵀA, the augmented matrix)
-            head = body[:2 if ps else 1]
             return (_function(name, body) + "\n\n"
                     + _function("mass", _mass_body(n, head, temporaries, mass_lines, fused.mass_upper)))
     elif flavour == "numba_status":

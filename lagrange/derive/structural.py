@@ -41,20 +41,13 @@ from ..model.bodies import Particle
 from ..model.coordinates import acceleration_symbol, position_symbol, to_symbols, velocity_symbol
 from ..model.inputs import is_input
 from ..model.rigid_body import RigidBody
-from .derivation_choice import (  # noqa: F401 - re-exported: where System's derivation is decided
-    AUTO_MIN_COORDINATES,
-    DERIVATIONS,
-    _kinematic_expressions,
-    auto_structural,
-    structural_refusal,
-)
+from .derivation_choice import DERIVATIONS, structural_refusal  # noqa: F401 - re-exported (__all__)
 from .equations import Equations
 from .lagrange import _tidy_force, gradient
 from .multipliers import constraint_blocks
 
 __all__ = ["PointMass", "Rotor", "Structure", "StructuralEquations", "structural_equations",
            "structural_refusal", "DERIVATIONS"]
-
 
 
 @dataclass(frozen=True)
@@ -109,8 +102,6 @@ class Structure:
         for r in self.rotors:
             out += [*r.inertia, *(e for _, e in r.jacobian), *r.omega_bias, *r.acceleration_bias]
         return [sp.sympify(e) for e in out]
-
-
 
 
 def _positions(xs: list, q, qd) -> list:

@@ -112,7 +112,7 @@ class System:
         set-up linear in the size of the kinematics) — only when the kinetic energy comes wholly from
         Particle and RigidBody bodies (no ``T``, no Quaternion orientation), else DeclarationError naming why.
         ``"auto"`` (default): structural where it applies and pays (at least 6 coordinates;
-        :func:`lagrange.derive.structural.auto_structural`), else expanded. With structural, :attr:`T` is built
+        :func:`lagrange.derive.derivation_choice.auto_structural`), else expanded. With structural, :attr:`T` is built
         on first access only.
 
     Attributes
