@@ -42,9 +42,10 @@ END_TO_END = ("mass", "V_term", "constraint")
 OFF_VALUES = ("0", "off", "False", " no ")
 #: fresh-process hit, in-process reload, every System attribute keyed, equal declarations share a key, CHANGES,
 #: END_TO_END, DAMAGES on each of the two kinds of entry, VERSIONS, OFF_VALUES, a user sympy class is not cached,
-#: source entries are content-addressed
+#: source entries are content-addressed, and T from bodies: keyed by every field it is built from, T itself
+#: outside them, loaded without building T; entries rebuilt unevaluated and identical
 DERIVATION_CACHE_SCENARIOS = (1 + 1 + 1 + 1 + len(CHANGES) + len(END_TO_END) + 2 * len(DAMAGES) + len(VERSIONS)
-                              + len(OFF_VALUES) + 1 + 1)
+                              + len(OFF_VALUES) + 1 + 1 + 3 + 1)
 
 Y = np.array([0.3, -0.2, 0.1, 0.4])
 
@@ -203,6 +204,7 @@ def test_second_build_loads_and_matches(cache):
 def test_every_system_attribute_is_keyed_or_explained():
     """A new System attribute must enter the key or be listed as irrelevant to the derivation."""
     s = _declare()
+    s.T  # noqa: B018 - a cached property: built on first access when the bodies pin it down
     keyed = {name for name, _ in dc._declaration(s)}
     assert set(vars(s)) - {"_frozen"} == keyed | set(dc.UNKEYED_ATTRIBUTES)
     assert not keyed & set(dc.UNKEYED_ATTRIBUTES)
@@ -426,6 +428,7 @@ def test_hash_tree_separates_near_misses_and_ignores_sharing():
     from lagrange.examples import n_link_pendulum
 
     first = n_link_pendulum(3, symbolic=True)
+    first.T  # noqa: B018 - built now (on first access), before the cache is cleared
     clear_cache()
     second = n_link_pendulum(3, symbolic=True)
     assert first.T is not second.T and dc._fingerprint(first.T) == dc._fingerprint(second.T)
@@ -435,3 +438,120 @@ def test_hash_tree_separates_near_misses_and_ignores_sharing():
 
     assert dc._fingerprint(rebuild(first.T)) == dc._fingerprint(first.T)
     assert dc.declaration_key(first) == dc.declaration_key(second)
+
+
+def _body_variants() -> dict:
+    """Declarations whose T comes from bodies: each differs from "base" in one field the key reads."""
+    a, b, s = lg.coordinates("a b s")
+    m, l, I1, I3 = lg.parameters("m l I1 I3")
+    euler = lg.EulerAngles(a, b, sp.S.Zero)
+    sequence = lg.RotationSequence(("z", a), ("x", b))
+
+    def system(*bodies, **kw):
+        kw.setdefault("V", m * l * sp.cos(b))
+        return lg.System([a, b], bodies=list(bodies), **kw)
+
+    def rigid(mass=m, inertia=(I1, I1, I3), origin=(0, 0, 0), orientation=euler, com=(0, 0, l)):
+        return lg.RigidBody(mass, inertia, origin=origin, orientation=orientation, com=com)
+
+    bob = lg.Particle(m, (l * sp.sin(a), -l * sp.cos(a)))
+    return {
+        "base": system(rigid(), bob),
+        "particle mass": system(rigid(), lg.Particle(2 * m, (l * sp.sin(a), -l * sp.cos(a)))),
+        "particle position": system(rigid(), lg.Particle(m, (l * sp.sin(a), -l * sp.cos(a), l))),
+        "body order": system(bob, rigid()),
+        "rigid mass": system(rigid(mass=2 * m), bob),
+        "inertia": system(rigid(inertia=(I1, I3, I3)), bob),
+        "origin": system(rigid(origin=(l * a, 0, 0)), bob),
+        "com": system(rigid(com=(0, l, 0)), bob),
+        # the same rotation declared three ways: ω is built differently (Wells 8.11, the sequence, vee(RᵀṘ))
+        "orientation matrix": system(rigid(orientation=euler.matrix), bob),
+        "sequence": system(rigid(orientation=sequence), bob),
+        "prescribed": lg.System([a, b], bodies=[rigid(origin=(s, 0, 0)), bob], V=m * l * sp.cos(b),
+                                prescribed={s: sp.sin(lg.t)}),
+        "prescribed otherwise": lg.System([a, b], bodies=[rigid(origin=(s, 0, 0)), bob], V=m * l * sp.cos(b),
+                                          prescribed={s: sp.cos(lg.t)}),
+    }
+
+
+def test_bodies_key_t_by_every_field_it_is_built_from():
+    """T from Particles and RigidBodies is keyed by the bodies' fields (not built): every field T reads moves
+    the key, equal declarations share it, and the T built later is the eager one's."""
+    variants = _body_variants()
+    assert all(s._T_declaration is not None and "T" not in vars(s) for s in variants.values())
+    keys = {label: dc.declaration_key(s) for label, s in variants.items()}
+    assert len(set(keys.values())) == len(keys), keys
+    assert all("T" not in vars(s) for s in variants.values())  # the key did not build T
+    again = _body_variants()
+    assert {label: dc.declaration_key(s) for label, s in again.items()} == keys
+    # the z-x sequence's matrix is z-x-z Euler angles' with φ = 0: the same R, the same T, the same key
+    a, b = again["base"].coordinates
+    m, l, I1, I3 = lg.parameters("m l I1 I3")
+    same_R = lg.System([a, b], bodies=[lg.RigidBody(m, (I1, I1, I3), orientation=lg.RotationSequence(
+        ("z", a), ("x", b)).matrix, com=(0, 0, l)), again["base"].bodies[1]], V=m * l * sp.cos(b))
+    assert dc.declaration_key(same_R) == keys["orientation matrix"]
+    # a T given directly, equal to the bodies' T, is keyed by T: another key, and the same T as the lazy one
+    base = variants["base"]
+    given = lg.System(list(base.coordinates), T=base.T, V=base.V)
+    assert given._T_declaration is None and dc.declaration_key(given) != keys["base"]
+    # the lazy T with a prescribed motion is the eager one: T of the bodies, then the motion substituted
+    a, b, s = lg.coordinates("a b s")
+    body = variants["prescribed"].bodies[0]
+    eager = (body.kinetic_energy() + variants["prescribed"].bodies[1].kinetic_energy()).subs(s, sp.sin(lg.t)).doit()
+    assert sp.simplify(variants["prescribed"].T - eager) == 0
+
+
+def test_bodies_key_outside_what_pins_t_down():
+    """A Quaternion orientation, a varying mass or a body of another class: T is built at declaration and
+    keys the entry itself."""
+    a, b, c, d = lg.coordinates("a b c d")
+    m, I1 = lg.parameters("m I1")
+    quaternion = lg.System([a, b, c, d], bodies=[lg.RigidBody(m, (I1, I1, I1), orientation=lg.Quaternion(a, b, c, d))])
+
+    class Bob(lg.Particle):
+        pass
+
+    subclass = lg.System([a], bodies=[Bob(m, (sp.sin(a), sp.cos(a)))])
+    varying = lg.System([a], bodies=[lg.Particle(m * (1 + a**2), (a,))])
+    for s in (quaternion, subclass, varying):
+        assert s._T_declaration is None and "T" in vars(s)
+        assert dc.declaration_key(s) is not None
+
+
+def test_bodies_key_loads_without_building_t(cache):
+    """A second System of a body declaration loads its equations from the entry without building T, and
+    they are the ones derived (rigid body, particle, prescribed motion)."""
+    root, calls = cache
+    first = _body_variants()["prescribed"]
+    eqs = first.derived
+    again = _body_variants()["prescribed"]
+    loaded = again.derived
+    assert calls["derive"] == 1 and "T" not in vars(again)
+    assert _digest(loaded) == _digest(eqs)
+    fresh = _body_variants()["prescribed"]
+    assert sp.simplify(fresh.T - first.T) == 0  # (built on access, from the same fields)
+
+
+def test_entry_pickling_rebuilds_nodes_unevaluated_and_identical():
+    """Add, Mul, Pow and sympy's functions are stored as their arguments and rebuilt without evaluation (and
+    without deducing commutativity again): every node comes back with the same srepr, equal, with the same hash
+    and assumptions — for functions whose eval would act (multiples of π, parities, signs) and a
+    non-commutative product."""
+    import pickle
+
+    x, y = lg.coordinates("x y")
+    a = sp.Symbol("a", positive=True)
+    A, B = sp.symbols("A B", commutative=False)
+    exprs = [
+        sp.sin(x - y) * sp.cos(2 * x) + sp.exp(-a * x) * sp.sqrt(1 + y**2),
+        sp.Abs(x - y) + sp.sign(x.diff(lg.t)) * a + sp.atan2(y, x),
+        sp.Piecewise((x, x > 0), (-x, True)) + sp.Heaviside(y - 1) + sp.besselj(1, a * x),
+        sp.cos(sp.pi / 3 + x) ** 2 + sp.tan(-x) + sp.log(a * y**2),
+        A * B - B * A + 2 * A * x,
+    ]
+    for e in exprs:
+        back = pickle.loads(dc._dumps(e))  # noqa: S301 - the test's own bytes
+        assert sp.srepr(back) == sp.srepr(e) and back == e and hash(back) == hash(e)
+        assert back.is_commutative == e.is_commutative
+        assert [n.is_commutative for n in sp.preorder_traversal(back)] == [
+            n.is_commutative for n in sp.preorder_traversal(e)]

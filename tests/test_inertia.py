@@ -314,3 +314,16 @@ def test_composite_body_adds_and_subtracts():
     rest = plate - quarter
     assert (rest + quarter).equals(plate)
     assert _zero(rest.I_xy + M * a**2 / 4)
+
+
+def test_euler_angles_matrix_is_the_product_of_its_rotations_term_for_term():
+    """EulerAngles.matrix is built multiplied out; it must be R_z(ψ) R_x(θ) R_z(φ) expression for expression
+    (same srepr: the equations derived from it, and their cache keys, do not change), for coordinates and for
+    expressions of them."""
+    import lagrange as lg
+    from lagrange.model.rotations import EulerAngles, rot_x, rot_z
+
+    a, b = lg.coordinates("a b")
+    for angles in ((psi, theta, phi), (a + b, sp.pi / 3, 2 * a), (sp.S.Zero, b, sp.S.Zero)):
+        product = rot_z(angles[0]) * rot_x(angles[1]) * rot_z(angles[2])
+        assert [sp.srepr(e) for e in EulerAngles(*angles).matrix] == [sp.srepr(e) for e in product]

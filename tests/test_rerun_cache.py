@@ -6,7 +6,6 @@ a tampered tape entry is refused and rebuilt, and the rebuilt run gives the same
 
 from __future__ import annotations
 
-import io
 import json
 import os
 import subprocess
@@ -62,9 +61,9 @@ def test_fresh_process_rerun_hits_changed_model_misses_tampered_tape_refused(tmp
     the same model again (the tape is refused, rebuilt and the answer unchanged)."""
     cold = _run(tmp_path)
     assert cold["method"].startswith("taylor")
-    for kind in ("derived", "source", "tape"):
+    for kind in ("derived", "source", "code", "tape"):
         assert cold["stats"][kind]["hit"] == 0 and cold["stats"][kind]["miss"] >= 1, (kind, cold["stats"])
-    tapes = sorted(tmp_path.glob("tape_*.npz"))
+    tapes = sorted(tmp_path.glob("tape_*.npys"))
     assert len(tapes) == 1
     # closed form of the harmonic oscillator: x = 0.5 cos(2 t)
     assert np.allclose(cold["final"], [0.5 * np.cos(4.0), -1.0 * np.sin(4.0), 0.0][: len(cold["final"])],
@@ -72,7 +71,7 @@ def test_fresh_process_rerun_hits_changed_model_misses_tampered_tape_refused(tmp
 
     warm = _run(tmp_path)
     assert warm["final"] == cold["final"]  # bit for bit
-    for kind in ("derived", "tape"):
+    for kind in ("derived", "code", "tape"):
         assert warm["stats"][kind] == {"hit": 1, "miss": 0, "refused": 0}, (kind, warm["stats"])
     assert warm["stats"]["source"]["miss"] == 0
     assert not [m for m in warm["loaded"] if m.split(".")[0] in _NOT_ON_A_TAYLOR_RERUN
@@ -81,7 +80,7 @@ def test_fresh_process_rerun_hits_changed_model_misses_tampered_tape_refused(tmp
     changed = _run(tmp_path, quartic=0.25)
     assert changed["stats"]["derived"]["miss"] == 1 and changed["stats"]["tape"] == {"hit": 0, "miss": 1,
                                                                                        "refused": 0}
-    assert len(list(tmp_path.glob("tape_*.npz"))) == 2
+    assert len(list(tmp_path.glob("tape_*.npys"))) == 2
     assert not np.allclose(changed["final"], cold["final"])
 
     data = bytearray(tapes[0].read_bytes())
@@ -124,7 +123,7 @@ def test_rerun_of_a_top_with_euler_angles_loads_everything_and_imports_no_scipy(
         runs.append(json.loads(r.stdout.strip().splitlines()[-1]))
     cold, warm = runs
     assert cold["stats"]["derived"] == {"hit": 0, "miss": 1, "refused": 0}
-    for kind in ("derived", "tape"):
+    for kind in ("derived", "code", "tape"):
         assert warm["stats"][kind] == {"hit": 1, "miss": 0, "refused": 0}, (kind, warm["stats"])
     assert warm["final"] == cold["final"]
     h0, h1 = warm["energy"]
@@ -171,11 +170,9 @@ def test_loaded_tape_equals_built_tape_and_a_forged_one_is_refused(cache, monkey
     bad["code"][0, 3] = int(arrays["n_slots"]) + 5  # writes outside the tape's slots
     assert tape_module._tape_valid(arrays) and not tape_module._tape_valid(bad)
     monkeypatch.setenv(dc.ENV_VAR, "1")
-    entry = next(cache.glob("tape_*.npz"))
+    entry = next(cache.glob("tape_*.npys"))
     key = entry.stem.split("_", 1)[1]
-    buffer = io.BytesIO()
-    np.savez(buffer, **bad)
-    dc._write(entry, key, buffer.getvalue())  # sealed with the right key: only the content check can catch it
+    dc._write(entry, key, dc._pack_arrays(bad))  # sealed with the right key: only the content check can catch it
     tape_module._TAPES.clear()
     before = dc.statistics()["tape"]
     with warnings.catch_warnings():
@@ -226,3 +223,49 @@ def test_mass_matrix_function_matches_the_reference_lambdify():
             got = model.mass_matrix(t0, y)
             assert got.shape == (model.n, model.n)
             np.testing.assert_allclose(got, ref, rtol=1e-13, atol=1e-15)
+
+
+def test_array_records_round_trip_and_refuse_damage():
+    """The tape entry's container: names and dtypes survive; a truncated record, a repeated name, an object
+    array or trailing bytes raise (the entry is then refused and rebuilt), never load as something else."""
+    arrays = {"code": np.arange(12, dtype=np.int32).reshape(3, 4), "x": np.linspace(0, 1, 5), "ok": np.array(True)}
+    packed = dc._pack_arrays(arrays)
+    back = dc._unpack_arrays(packed)
+    assert list(back) == list(arrays)
+    assert all(back[k].dtype == v.dtype and np.array_equal(back[k], v) for k, v in arrays.items())
+    for damaged in (packed[:-3], packed + b"\x01", packed + packed[: len(packed) // 2]):
+        with pytest.raises(Exception):  # noqa: B017, PT011 - numpy's or ours: any refusal will do
+            dc._unpack_arrays(damaged)
+    with pytest.raises(ValueError):
+        dc._pack_arrays({"o": np.array([object()])})
+
+
+def test_compiled_code_entry_loads_and_damage_is_refused(tmp_path, monkeypatch):
+    """The python backend's compiled module: a second process-like load (the in-process memo cleared) reads
+    the marshalled code and gives the same function; a damaged or foreign entry is refused and recompiled."""
+    monkeypatch.setenv("LAGRANGE_CACHE_DIR", str(tmp_path))
+    monkeypatch.setenv(dc.ENV_VAR, "1")
+    source = "def rhs(t, y, p):\n    return [y[1], -p[0] * y[0]]\n"
+    dc._CODE.clear()
+    first = dc.cached_code(source, "<lagrange rhs>")
+    entry = next(tmp_path.glob("code_*.pyc"))
+    dc._CODE.clear()
+    before = dc.statistics()["code"]
+    again = dc.cached_code(source, "<lagrange rhs>")
+    assert dc.statistics()["code"]["hit"] == before["hit"] + 1 and again is not first
+    namespace: dict = {}
+    exec(again, namespace)  # noqa: S102 - the test's own source
+    assert namespace["rhs"](0.0, [0.5, 0.0], [4.0]) == [0.0, -2.0]
+    key = entry.stem.split("_", 1)[1]
+    dc._write(entry, key, b"not marshalled code")  # sealed with the right key: only the load can refuse it
+    dc._CODE.clear()
+    before = dc.statistics()["code"]
+    rebuilt = dc.cached_code(source, "<lagrange rhs>")
+    after = dc.statistics()["code"]
+    assert after["refused"] == before["refused"] + 1 and after["hit"] == before["hit"]
+    assert rebuilt.co_filename == "<lagrange rhs>"
+    dc._CODE.clear()
+    other = dc.cached_code(source.replace("p[0]", "p[0] * 2"), "<lagrange rhs>")  # another source, another key
+    namespace = {}
+    exec(other, namespace)  # noqa: S102
+    assert namespace["rhs"](0.0, [0.5, 0.0], [4.0]) == [0.0, -4.0]

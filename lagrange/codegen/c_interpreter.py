@@ -25,12 +25,8 @@ import hashlib
 import importlib.util
 import os
 import platform
-import shlex
 import shutil
-import subprocess
 import sys
-import sysconfig
-import tempfile
 from pathlib import Path
 
 __all__ = ["ENV_VAR", "SOURCE", "FLAGS", "EXTENSION", "compiler", "library_path", "library_path_or_reason",
@@ -54,6 +50,9 @@ def disabled() -> bool:
 def compiler() -> list[str] | None:
     """The command that builds the library: ``$CC``, else Python's configured compiler, else ``cc`` (split into
     argv), or None when its program is not on PATH."""
+    import shlex  # (here: a run that finds the installed extension never needs them)
+    import sysconfig
+
     cc = os.environ.get("CC") or sysconfig.get_config_var("CC") or "cc"
     argv = shlex.split(cc)
     return argv if argv and shutil.which(argv[0]) else None
@@ -117,6 +116,9 @@ def _fsync_dir(folder: Path) -> None:
 def _build(cc: list[str], target: Path) -> str | None:
     """Compile the source into ``target``: temporary file, fsync, seal, ``os.replace``; None on success, else
     the reason."""
+    import subprocess
+    import tempfile
+
     fd, tmp = tempfile.mkstemp(dir=target.parent, prefix=f".{target.stem}.", suffix=".so")
     os.close(fd)
     try:

@@ -1,25 +1,32 @@
 """The derivation cache: derived equations and generated source on disk, so a re-run of the same declared
 model in a fresh process skips both the sympy derivation and the code generation (CSE, printing).
 
-Two kinds of entry live in :func:`~lagrange.codegen.cache.cache_dir` (``$LAGRANGE_CACHE_DIR``, else
+Its entries live in :func:`~lagrange.codegen.cache.cache_dir` (``$LAGRANGE_CACHE_DIR``, else
 ``$XDG_CACHE_HOME/lagrange``, else ``~/.cache/lagrange``; private, see :mod:`lagrange.codegen.cache`), next
 to the numba bundles:
 
 ``derived_<key>.pkl``
     the pickled :class:`~lagrange.derive.equations.Equations` of a :class:`~lagrange.System`, under
     :func:`declaration_key`: a SHA-256 over a hash tree of everything the derivation reads from the
-    declaration (coordinates with their assumptions, T, V, P, the Rayleigh function, the generalized
-    forces, the constraints, prescribed motions, declared parameters, name) and of :func:`environment`;
+    declaration (coordinates with their assumptions, T — or, when it comes wholly from Particles and
+    RigidBodies, the fields it is built from (:func:`~lagrange.derive.derivation_choice.kinetic_declaration`),
+    so that a re-run never builds it — V, P, the Rayleigh function, the generalized forces, the constraints,
+    prescribed motions, declared parameters, name) and of :func:`environment`;
 ``source_<key>.txt``
     the generated source of one backend, under a SHA-256 of the equations' fingerprint
     (:func:`equations_fingerprint`), the code generator's options and :func:`environment`. Equations
     derived from a declaration are fingerprinted by their declaration key (the derivation is a function of
     the declaration and the environment, both in the key); equations built any other way by the hash tree
     of their content, so they hit exactly when their content is the same;
-``tape_<key>.npz``
+``code_<key>.pyc``
+    the generated python-backend module compiled (:func:`cached_code`: its code object marshalled, as in a
+    ``.pyc``), under a SHA-256 of the source and :func:`environment` (whose Python version is the
+    marshal format's);
+``tape_<key>.npys``
     the Taylor tape (:class:`~lagrange.codegen.tape.Tape`: the CSE translated into numbered instructions) of
     a model, under a SHA-256 of the equations' fingerprint and :func:`environment`; plain integer and float
-    arrays in NumPy's ``.npz`` format, read with ``allow_pickle=False`` (nothing in it is unpickled), so a
+    arrays, each a name and NumPy's ``.npy`` record, read with ``allow_pickle=False`` (nothing in it is
+    unpickled; not ``.npz``, whose zip reader cost 10–20 ms of a warm re-run's 0.4 s), so a
     re-run of ``method="taylor"`` skips the CSE and the translation (1.1 s of a warm re-run of the 10-link
     pendulum before it was cached).
 
@@ -47,6 +54,7 @@ from __future__ import annotations
 
 import hashlib
 import io
+import marshal
 import os
 import pickle
 import platform
@@ -56,10 +64,11 @@ from collections.abc import Callable
 from dataclasses import fields
 from functools import lru_cache
 from pathlib import Path
+from types import CodeType
 
 import numpy as np
 import sympy as sp
-from sympy.core.function import UndefinedFunction
+from sympy.core.function import AppliedUndef, UndefinedFunction
 from sympy.printing.repr import ReprPrinter
 
 from ..derive.equations import Equations
@@ -68,18 +77,19 @@ from .cache import cache_dir, read_verified, write_sealed
 
 __all__ = ["ENV_VAR", "MAX_ENTRIES_VAR", "prune",
            "enabled", "environment", "declaration_key", "equations_fingerprint", "cached_equations",
-           "stored_equations", "cached_source", "cached_arrays", "statistics"]
+           "stored_equations", "cached_source", "cached_code", "cached_arrays", "statistics"]
 
 #: environment variable that turns the cache off (``0``, ``off``, ``false``, ``no``)
 ENV_VAR = "LAGRANGE_DERIVATION_CACHE"
 _FORMAT = 1
 #: how declarations and equations are turned into keys (:class:`_KeyHasher`; the srepr text before)
-_KEY_FORMAT = "merkle-sha256 v1"
+_KEY_FORMAT = "merkle-sha256 v2 (T by its bodies' fields)"
 _OFF = ("0", "off", "false", "no")
 #: System attributes that are not in the key, and why (tests check every other attribute is keyed)
 UNKEYED_ATTRIBUTES = {
-    "bodies": "their kinetic energy is in T and their constraints in constraints",
-    "T_given": "part of T",
+    "bodies": "their kinetic energy is in T (or in _T_declaration) and their constraints in constraints",
+    "T_given": "part of T (zero when _T_declaration stands for T)",
+    "_T_declaration": "keyed as T when not None: the fields T is built from",
     "description": "text only",
     "derivation": "only expanded derivations are cached (structural ones are derived directly, in a fraction of it)",
     "_kinematic_bodies": "the bodies with prescribed motion substituted: in T",
@@ -95,15 +105,15 @@ def _count(kind: str, outcome: str) -> None:
 
 def statistics() -> dict[str, dict[str, int]]:
     """What the cache did in this process: ``{kind: {"hit": n, "miss": n, "refused": n}}`` for the kinds
-    ``"derived"``, ``"source"`` and ``"tape"`` (a *miss* builds and stores the entry; *refused* counts entries
-    that were present but did not authenticate, did not match their header or did not load, and were
+    ``"derived"``, ``"source"``, ``"code"`` and ``"tape"`` (a *miss* builds and stores the entry; *refused* counts
+    entries that were present but did not authenticate, did not match their header or did not load, and were
     rebuilt; a refused entry is also a miss). Runs with the cache off count nothing.
 
     >>> sorted(statistics())
-    ['derived', 'source', 'tape']
+    ['code', 'derived', 'source', 'tape']
     """
     return {kind: {outcome: _STATS.get((kind, outcome), 0) for outcome in ("hit", "miss", "refused")}
-            for kind in ("derived", "source", "tape")}
+            for kind in ("derived", "source", "code", "tape")}
 
 
 def enabled() -> bool:
@@ -117,12 +127,22 @@ SOURCES = ("conventions.py", "simplification.py", "symengine_bridge.py", "model"
 
 @lru_cache(maxsize=1)
 def _source_digest() -> str:
-    """SHA-256 of the ``.py`` files (paths and bytes) of :data:`SOURCES`, once per process."""
-    root = Path(__file__).resolve().parents[1]
-    h = hashlib.sha256()
+    """SHA-256 of the ``.py`` files (paths and bytes) of :data:`SOURCES`, once per process (``os.walk`` and
+    plain strings: pathlib's ``rglob`` and ``relative_to`` doubled its 3 ms on every run)."""
+    root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+    files = []
     for part in SOURCES:
-        for path in sorted([root / part] if part.endswith(".py") else (root / part).rglob("*.py")):
-            h.update(path.relative_to(root).as_posix().encode() + b"\0" + path.read_bytes() + b"\0")
+        if part.endswith(".py"):
+            files.append(part)
+            continue
+        for folder, dirs, names in os.walk(os.path.join(root, part)):
+            dirs[:] = [d for d in dirs if d != "__pycache__"]
+            rel = os.path.relpath(folder, root).replace(os.sep, "/")
+            files += [f"{rel}/{name}" for name in names if name.endswith(".py")]
+    h = hashlib.sha256()
+    for rel in sorted(files, key=lambda r: (SOURCES.index(r.split("/")[0]), r)):
+        with open(os.path.join(root, *rel.split("/")), "rb") as fh:
+            h.update(rel.encode() + b"\0" + fh.read() + b"\0")
     return h.hexdigest()
 
 
@@ -285,7 +305,9 @@ def _declaration(system) -> tuple:
     declared = system._declared_parameters
     return (
         ("coordinates", tuple(system.coordinates)),
-        ("T", system.T), ("V", system.V), ("P", system.P), ("rayleigh", system.rayleigh),
+        # T by what it is built from when that pins it down (a warm re-run never builds it), else T itself
+        ("T", system._T_declaration if getattr(system, "_T_declaration", None) is not None else system.T),
+        ("V", system.V), ("P", system.P), ("rayleigh", system.rayleigh),
         ("forces", tuple(sorted(system.forces.items(), key=lambda kv: str(kv[0])))),
         ("constraints", tuple(tuple((f.name, getattr(c, f.name)) for f in fields(c)) for c in system.constraints)),
         ("prescribed", tuple(sorted(system.prescribed.items(), key=lambda kv: str(kv[0])))),
@@ -380,7 +402,8 @@ MAX_ENTRIES_VAR = "LAGRANGE_DERIVATION_CACHE_MAX"
 
 
 def prune(directory: Path, max_entries: int | None = None) -> int:
-    """Delete the least recently written entries (``derived_*.pkl``, ``source_*.txt``, ``tape_*.npz``,
+    """Delete the least recently written entries (``derived_*.pkl``, ``source_*.txt``, ``code_*.pyc``,
+    ``tape_*.npys``,
     ``*.numba``, ``heyoka_*.pkl``) beyond
     ``max_entries`` (default ``$LAGRANGE_DERIVATION_CACHE_MAX`` or 2000), down to 90 % of it; returns the
     number deleted. Called after every write (a cache miss), so the directory never grows without bound."""
@@ -390,7 +413,7 @@ def prune(directory: Path, max_entries: int | None = None) -> int:
         except ValueError:
             max_entries = 2000
     entries = []
-    for pattern in ("derived_*.pkl", "source_*.txt", "tape_*.npz", "*.numba", "heyoka_*.pkl"):
+    for pattern in ("derived_*.pkl", "source_*.txt", "code_*.pyc", "tape_*.npys", "*.numba", "heyoka_*.pkl"):
         for path in directory.glob(pattern):
             try:
                 entries.append((path.stat().st_mtime, path))
@@ -409,9 +432,10 @@ def prune(directory: Path, max_entries: int | None = None) -> int:
     return removed
 
 
-def _stored(cls: type, args: tuple):
-    """An ``Add`` or ``Mul`` rebuilt from the arguments it was stored with, without evaluating them again."""
-    return cls._from_args(args)
+def _stored(cls: type, args: tuple, commutative: bool | None = None):
+    """An ``Add`` or ``Mul`` rebuilt from the arguments it was stored with, without evaluating them again (nor
+    deducing again whether it commutes: stored with it, a third of the load before)."""
+    return cls._from_args(args, commutative)
 
 
 def _stored_pow(base, exp):
@@ -419,22 +443,33 @@ def _stored_pow(base, exp):
     return sp.Pow(base, exp, evaluate=False)
 
 
+def _stored_function(cls: type, args: tuple):
+    """An applied sympy function (``sin``, ``cos``, ``exp``, …) rebuilt from its stored arguments without
+    evaluating it again (its ``eval`` looks for multiples of π, parities, …: half of loading a double pendulum's
+    equations)."""
+    return cls(*args, evaluate=False)
+
+
 class _Pickler(pickle.Pickler):
-    """Pickles ``Add``, ``Mul`` and ``Pow`` as their stored arguments, rebuilt unevaluated on load.
+    """Pickles ``Add``, ``Mul``, ``Pow`` and sympy's own functions (``sin``, ``cos``, …) as their stored arguments,
+    rebuilt unevaluated on load.
 
     Plain pickling rebuilds every sympy node through its constructor, which evaluates (flattens, collects
     and sorts) again: 85 % of loading a derived entry (10-link pendulum: 0.33 s → 0.05 s). The arguments are
     those of an already canonical expression (what the constructor returned when the entry was made), so the
-    rebuilt expression is the same (same ``srepr``, equal, same hash: checked by the tests); only these three
-    exact classes are treated so, every other node is rebuilt by its constructor as before.
+    rebuilt expression is the same (same ``srepr``, equal, same hash: checked by the tests); only these
+    classes are treated so, every other node is rebuilt by its constructor as before.
     """
 
     def reducer_override(self, obj):
         cls = type(obj)
         if cls is sp.Add or cls is sp.Mul:
-            return _stored, (cls, obj.args)
+            return _stored, (cls, obj.args, obj.is_commutative)
         if cls is sp.Pow:
             return _stored_pow, obj.args
+        if (isinstance(obj, sp.Function) and not isinstance(obj, AppliedUndef)
+                and (cls.__module__ or "").startswith("sympy.functions.")):
+            return _stored_function, (cls, obj.args)
         return NotImplemented
 
 
@@ -524,6 +559,48 @@ def cached_source(eqs: Equations, options: str, generate: Callable[[], str]) -> 
     return source
 
 
+#: compiled code by the SHA-256 of its source, in this process (bounded): a re-run in the same process neither
+#: reads the entry again nor unmarshals it
+_CODE: dict[str, CodeType] = {}
+_CODE_MEMO = 64
+
+
+def cached_code(source: str, filename: str) -> CodeType:
+    """``compile(source, filename, "exec")``, loaded from the cache when an intact entry exists (``code_<key>.pyc``:
+    the code object marshalled, as in a ``.pyc`` file, under a SHA-256 of the source, ``filename`` and
+    :func:`environment`, which names the Python version that wrote it), else compiled and stored.
+
+    The python backend's generated module of a 10-link pendulum takes 25–35 ms to compile and 1 ms to unmarshal.
+    A marshalled entry is trusted as a pickle is: only after its seal (HMAC) and header are verified.
+    """
+    digest = hashlib.sha256(source.encode("utf-8")).hexdigest()
+    code = _CODE.get(digest)
+    if code is not None:
+        return code
+    key = _digest("code", digest, filename, environment()) if enabled() else None
+    path = _entry_path("code", key, ".pyc") if key is not None else None
+    payload = _read(path, key) if key is not None else None
+    if payload is not None:
+        try:
+            code = marshal.loads(payload)
+        except Exception:  # noqa: BLE001 - an entry that does not load is rebuilt
+            code = None
+        if isinstance(code, CodeType) and code.co_filename == filename:
+            _count("code", "hit")
+        else:
+            code = None
+    if code is None:
+        if key is not None:
+            _refused_or_missing("code", path)
+        code = compile(source, filename, "exec")
+        if key is not None:
+            _write(path, key, marshal.dumps(code))
+    if len(_CODE) >= _CODE_MEMO:
+        _CODE.pop(next(iter(_CODE)))
+    _CODE[digest] = code
+    return code
+
+
 def _refused_or_missing(kind: str, path: Path | None) -> None:
     """Count a miss, and a refusal when an entry was there (it did not authenticate, match or load)."""
     _count(kind, "miss")
@@ -531,11 +608,39 @@ def _refused_or_missing(kind: str, path: Path | None) -> None:
         _count(kind, "refused")
 
 
+def _pack_arrays(arrays: dict[str, np.ndarray]) -> bytes:
+    """``arrays`` as one byte string: per array its name (2-byte length, UTF-8) and its ``.npy`` record
+    (:func:`numpy.lib.format.write_array`, no pickles)."""
+    from numpy.lib import format as npy
+
+    buffer = io.BytesIO()
+    for name, value in arrays.items():
+        raw = name.encode("utf-8")
+        buffer.write(len(raw).to_bytes(2, "little") + raw)
+        npy.write_array(buffer, np.asarray(value), allow_pickle=False)
+    return buffer.getvalue()
+
+
+def _unpack_arrays(payload: bytes) -> dict[str, np.ndarray]:
+    """The arrays of :func:`_pack_arrays` (raises on anything else: a truncated record, an object array)."""
+    from numpy.lib import format as npy
+
+    buffer, out = io.BytesIO(payload), {}
+    while buffer.tell() < len(payload):
+        size = int.from_bytes(buffer.read(2), "little")
+        name = buffer.read(size).decode("utf-8")
+        if len(name.encode("utf-8")) != size or name in out:
+            raise ValueError("a damaged array record")
+        out[name] = npy.read_array(buffer, allow_pickle=False)
+    return out
+
+
 def cached_arrays(eqs: Equations, kind: str, options: str, build: Callable[[], dict[str, np.ndarray]],
                   accept: Callable[[dict[str, np.ndarray]], bool] | None = None) -> dict[str, np.ndarray]:
     """``build()``, a dictionary of numeric arrays (integer, float or bool; no objects) made from ``eqs`` with
-    ``options``, loaded from the cache (``<kind>_<key>.npz``) when an intact entry exists, else built and
-    stored. The entry is NumPy's ``.npz`` read with ``allow_pickle=False``, after its seal is verified.
+    ``options``, loaded from the cache (``<kind>_<key>.npys``) when an intact entry exists, else built and
+    stored. The entry is the arrays' ``.npy`` records (:func:`_pack_arrays`) read with ``allow_pickle=False``,
+    after its seal is verified.
 
     ``kind`` names the entry (``"tape"``: :func:`lagrange.codegen.tape.tape_of`); an entry whose arrays do not
     load, hold objects or fail ``accept(arrays)`` (the caller's check of names, types and shapes) is refused
@@ -545,12 +650,11 @@ def cached_arrays(eqs: Equations, kind: str, options: str, build: Callable[[], d
     if fingerprint is None:
         return build()
     key = _digest(kind, fingerprint, options, environment())
-    path = _entry_path(kind, key, ".npz")
+    path = _entry_path(kind, key, ".npys")
     payload = _read(path, key)
     if payload is not None:
         try:
-            with np.load(io.BytesIO(payload), allow_pickle=False) as data:
-                arrays = {name: data[name] for name in data.files}
+            arrays = _unpack_arrays(payload)
         except Exception:  # noqa: BLE001 - an entry that does not load is rebuilt
             arrays = None
         if arrays is not None and (accept is None or accept(arrays)):
@@ -558,7 +662,5 @@ def cached_arrays(eqs: Equations, kind: str, options: str, build: Callable[[], d
             return arrays
     _refused_or_missing(kind, path)
     arrays = build()
-    buffer = io.BytesIO()
-    np.savez(buffer, **arrays)
-    _write(path, key, buffer.getvalue())
+    _write(path, key, _pack_arrays(arrays))
     return arrays

@@ -35,7 +35,6 @@ import sympy as sp
 from ..derive.equations import Equations
 from ..errors import BackendError, ParameterError, SingularMassMatrixError, SpecError
 from ..model.coordinates import coordinate_name
-from .cse import numeric_arguments, rename_map
 
 __all__ = ["NumericModel", "ConstraintFunctions", "compile_equations", "bind_parameters", "BACKENDS"]
 
@@ -362,6 +361,8 @@ class NumericModel:
         mass = raw.__globals__.get("mass") if self.backend == "python" else None
         if mass is not None:
             return mass
+        from .cse import numeric_arguments, rename_map  # (here: not on a warm re-run's path)
+
         ren = rename_map(self.equations)
         tt, ys, ps = numeric_arguments(self.equations)
         # rows of floats from the math module, as the generated code uses: lambdify's numpy namespace imports
@@ -575,6 +576,8 @@ class NumericModel:
 
 
 def _reference_functions(eqs: Equations):
+    from .cse import numeric_arguments, rename_map  # (here: not on a warm re-run's path)
+
     ren = rename_map(eqs)
     n = eqs.n
     tt, ys, ps = numeric_arguments(eqs)
@@ -609,6 +612,8 @@ def _reference_functions(eqs: Equations):
 
 
 def _aux_function(eqs: Equations):
+    from .cse import numeric_arguments, rename_map  # (here: not on a warm re-run's path)
+
     ren = rename_map(eqs)
     tt, ys, ps = numeric_arguments(eqs)
     T, h, T2, T0 = eqs.energy_parts()
@@ -631,6 +636,8 @@ class ConstraintFunctions:
     their Jacobian ``holonomic_matrix(t, q)``, and ``matrix(t, q)`` / ``bias(t, q)`` (A, b) of all."""
 
     def __init__(self, eqs: Equations, params: np.ndarray):
+        from .cse import numeric_arguments, rename_map  # (here: not on a warm re-run's path)
+
         ren = rename_map(eqs)
         n = eqs.n
         tt, ys, ps = numeric_arguments(eqs)
@@ -678,8 +685,10 @@ class _Lazy:
 
 
 def _python_rhs(source: str) -> Callable:
+    from .derivation_cache import cached_code
+
     namespace: dict = {"math": math, "np": np}
-    exec(compile(source, "<lagrange rhs>", "exec"), namespace)  # noqa: S102 - our own generated code
+    exec(cached_code(source, "<lagrange rhs>"), namespace)  # noqa: S102 - our own generated code
     return namespace["rhs"]
 
 

@@ -31,7 +31,6 @@ import sympy as sp
 
 from ..derive.equations import Equations
 from ..errors import LagrangeError
-from .cse import fuse
 
 __all__ = ["Tape", "TapeError", "build_tape", "tape_of", "OPCODES"]
 
@@ -256,6 +255,8 @@ def build_tape(eqs: Equations) -> Tape:
     conservative = eqs.is_conservative
     _check_analytic(eqs)
     extra = () if conservative else (eqs.jacobi_rate,)
+    from .cse import fuse  # (here: a run that loads its tape from the cache never needs the CSE)
+
     fused, red_extra = fuse(eqs, extra=extra)
     nz = 2 * n + (0 if conservative else 1)
     slot_t = nz
@@ -315,7 +316,7 @@ def _tape_valid(a: dict[str, np.ndarray]) -> bool:
 
 def tape_of(eqs: Equations) -> Tape:
     """:func:`build_tape` of ``eqs``, built once per Equations (equal equations share it) and kept in the
-    on-disk cache (:func:`lagrange.codegen.derivation_cache.cached_arrays`, entry ``tape_<key>.npz``): a
+    on-disk cache (:func:`lagrange.codegen.derivation_cache.cached_arrays`, entry ``tape_<key>.npys``): a
     re-run of the same model in a new process loads it instead of running the CSE again."""
     if eqs not in _TAPES:
         from .derivation_cache import cached_arrays

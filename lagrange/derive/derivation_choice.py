@@ -13,9 +13,9 @@ from sympy.core.function import AppliedUndef
 from ..conventions import t
 from ..model.bodies import Particle
 from ..model.rigid_body import RigidBody
-from ..model.rotations import Quaternion
+from ..model.rotations import EulerAngles, Quaternion, RotationSequence
 
-__all__ = ["DERIVATIONS", "AUTO_MIN_COORDINATES", "structural_refusal", "auto_structural"]
+__all__ = ["DERIVATIONS", "AUTO_MIN_COORDINATES", "structural_refusal", "auto_structural", "kinetic_declaration"]
 
 #: the values of ``System(derivation=...)``
 DERIVATIONS = ("auto", "expanded", "structural")
@@ -49,6 +49,40 @@ def _kinematic_expressions(b) -> list:
     if isinstance(b, Particle):
         return [b.mass, *b.position]
     return [b.mass, *b.inertia, *b.origin, *b.com, *b.R]
+
+
+def kinetic_declaration(T_given, bodies) -> tuple | None:
+    """Everything the kinetic energy of ``T_given`` and ``bodies`` is built from, as plain data, when that
+    pins T down without building it; else None.
+
+    ``("bodies", (body, ...))`` with a body ``("Particle", m, (x, y, z))`` or ``("RigidBody", m, inertia (9),
+    origin (3), com (3), orientation)`` and an orientation ``("EulerAngles", ψ, θ, φ)``,
+    ``("RotationSequence", ((axis, angle), ...))`` or ``("matrix", R (9))`` — the fields ``kinetic_energy()``
+    reads (Wells 2.37 for a particle, 8.10 with 8.11 or ``vee(RᵀṘ)`` for a rigid body), whose code is in
+    the derivation cache's source digest. None when T is given directly or from a body of another class
+    (a subclass too), a Quaternion orientation, an integral or a varying mass or inertia
+    (:func:`structural_refusal`), or an orientation of a subclass: then T itself is what identifies it.
+    A :class:`~lagrange.System` builds T only on first use when this is not None (a warm re-run loads its
+    equations by this key and never builds T), and checks the bodies' kinematics at declaration instead.
+    """
+    if structural_refusal(T_given, bodies) is not None:
+        return None
+    out = []
+    for b in bodies:
+        if type(b) is Particle:
+            out.append(("Particle", b.mass, tuple(b.position)))
+            continue
+        o = b.orientation
+        if type(o) is EulerAngles:
+            orientation = ("EulerAngles", o.psi, o.theta, o.phi)
+        elif type(o) is RotationSequence:
+            orientation = ("RotationSequence", tuple(o.rotations))
+        elif isinstance(o, (sp.MatrixBase, list, tuple)):
+            orientation = ("matrix", tuple(b.R))
+        else:
+            return None
+        out.append(("RigidBody", b.mass, tuple(b.inertia), tuple(b.origin), tuple(b.com), orientation))
+    return ("bodies", tuple(out))
 
 
 def auto_structural(n: int, bodies) -> bool:

@@ -12,7 +12,7 @@ import sympy as sp
 __all__ = ["Equations"]
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)  # (its own __eq__ and __hash__ below)
 class Equations:
     """Lagrange's equations of a system in normal form, in plain symbols.
 

@@ -159,7 +159,7 @@ class RigidBody:
         return f"RigidBody{label}(mass={self.mass})"
 
 
-@dataclass(frozen=True, eq=False)
+@dataclass(frozen=True, eq=False, init=False)  # (its own __init__)
 class Torque:
     """A torque ``vector`` acting on ``body``: along its body axes (default) or the inertial axes.
 

@@ -24,7 +24,6 @@ from ..conventions import t as _TIME
 from ..errors import DeclarationError
 from ..safe_sympify import sympify as _sympify
 from .bodies import Body, Force
-from .constraints import Differential, Holonomic, Nonholonomic, normalize_constraints
 from .coordinates import coordinate_name, is_coordinate, normalize_time, virtual_displacement
 from .forces import generalized_forces
 from .inputs import inputs_in, is_input
@@ -112,8 +111,11 @@ class System:
         set-up linear in the size of the kinematics) — only when the kinetic energy comes wholly from
         Particle and RigidBody bodies (no ``T``, no Quaternion orientation), else DeclarationError naming why.
         ``"auto"`` (default): structural where it applies and pays (at least 6 coordinates;
-        :func:`lagrange.derive.derivation_choice.auto_structural`), else expanded. With structural, :attr:`T` is built
-        on first access only.
+        :func:`lagrange.derive.derivation_choice.auto_structural`), else expanded. With structural, and whenever
+        the kinetic energy comes wholly from Particles and RigidBodies whose fields pin it down
+        (:func:`lagrange.derive.derivation_choice.kinetic_declaration`), :attr:`T` is built on first access only
+        (the bodies' kinematics are checked at declaration; the derivation cache is keyed by those fields, so a
+        warm re-run never builds T).
 
     Attributes
     ----------
@@ -161,7 +163,7 @@ class System:
         description: str = "",
         derivation: str = "auto",
     ):
-        from ..derive.derivation_choice import DERIVATIONS, auto_structural, structural_refusal
+        from ..derive.derivation_choice import DERIVATIONS, auto_structural, kinetic_declaration, structural_refusal
 
         if derivation not in DERIVATIONS:
             raise DeclarationError(f"derivation={derivation!r} is not one of {', '.join(map(repr, DERIVATIONS))}")
@@ -230,9 +232,14 @@ class System:
         if derivation == "structural" and refusal is not None:
             problems.append(f"derivation='structural' is not available: {refusal}; use derivation='expanded'")
         structural = wanted and refusal is None
-        kinematic_bodies = tuple(b.subs(presc) for b in bodies) if presc and structural else bodies
+        # T from bodies whose fields pin it down is built on first access of .T (a warm re-run never builds it:
+        # the derivation cache is keyed by these fields); the bodies' kinematics are checked instead of T
+        T_declaration = kinetic_declaration(T_given, bodies) if not problems else None
+        from_bodies = structural or T_declaration is not None
+        checked_bodies = tuple(b.subs(presc) for b in bodies) if presc and from_bodies else bodies
+        kinematic_bodies = checked_bodies if structural else bodies
         T_total = None
-        if not structural:  # the structural path never builds the whole T (built on first access of .T)
+        if not from_bodies:
             T_total = T_given
             for b in bodies:
                 T_total += prep(b.kinetic_energy(), f"kinetic energy of {b!r}")
@@ -252,25 +259,27 @@ class System:
         constraints = list(constraints or ()) + [c for b in bodies for c in getattr(b, "constraints", tuple)()]
         if constraints:
             raw = [_substitute_constraint(c, presc) for c in constraints] if presc else list(constraints)
+            from .constraints import normalize_constraints  # (imported only by declarations with constraints)
+
             specs = normalize_constraints(raw, coords, problems)
             for spec in specs:
                 check_declared(spec.velocity, what=f"constraint {spec.name}")
                 if spec.velocity.has(sp.Integral):
                     problems.append(f"constraint {spec.name} contains an integral: give it in closed form")
                 self._check_expr(spec.name, spec.velocity, coords, presc, 1, problems, parameters)
-        if structural:  # each body's kinematics instead of the whole T: all at once, then per body if wrong
+        if from_bodies:  # each body's kinematics instead of the whole T: all at once, then per body if wrong
             found: list[str] = []
-            everything = sp.Tuple(*(e for b in kinematic_bodies for e in _kinematics_of(b)))
+            everything = sp.Tuple(*(e for b in checked_bodies for e in _kinematics_of(b)))
+            for b in checked_bodies:
+                check_declared(sp.Tuple(*_kinematics_of(b)), what=f"kinematics of {b.name or b!r}")
             _check_kinematics(self, "kinematics of the bodies", everything, coords, presc, found, parameters)
             if found:
-                for b in kinematic_bodies:
+                for b in checked_bodies:
                     _check_kinematics(self, f"kinematics of {b.name or b!r}", sp.Tuple(*_kinematics_of(b)), coords,
                                       presc, problems, parameters)
         else:
             self._check_expr("T", T_total, coords, presc, 1, problems, parameters)
-        _check_inputs(T_total if not structural else sp.Tuple(*(e for b in kinematic_bodies
-                                                                 for e in _kinematics_of(b))),
-                      V_e, specs, presc, P_e, D_e, F, coords, problems)
+        _check_inputs(T_total if not from_bodies else everything, V_e, specs, presc, P_e, D_e, F, coords, problems)
         self._check_expr("V", V_e, coords, presc, 0, problems, parameters)
         self._check_expr("P", P_e, coords, presc, 1, problems, parameters)
         self._check_expr("rayleigh", D_e, coords, presc, 1, problems, parameters)
@@ -284,6 +293,7 @@ class System:
             self.T: sp.Expr = T_total
         self.derivation: str = "structural" if structural else "expanded"
         self._kinematic_bodies = kinematic_bodies
+        self._T_declaration = T_declaration if from_bodies else None
         self.T_given: sp.Expr = T_given
         self.V: sp.Expr = V_e
         self.P: sp.Expr = P_e
@@ -360,11 +370,17 @@ class System:
 
     # --- derived quantities (memoized; the System never changes) -------------------------------
     @cached_property
-    def T(self) -> sp.Expr:  # noqa: F811 - the structural path sets no T in __init__: built here on first access
-        """The kinetic energy of ``T`` and every body together (see the class docstring)."""
+    def T(self) -> sp.Expr:  # noqa: F811 - set in __init__ only when the bodies' fields do not pin T down
+        """The kinetic energy of ``T`` and every body together (see the class docstring). Built on first access
+        when it comes wholly from bodies whose fields pin it down
+        (:func:`~lagrange.derive.derivation_choice.kinetic_declaration`): the derivation cache is keyed by those
+        fields, so a warm re-run never builds it."""
         total = self.T_given
         for b in self._kinematic_bodies:
-            total += b.kinetic_energy()
+            e = b.kinetic_energy()
+            if self.prescribed and self.derivation != "structural":  # (as an eager T: the prescribed motion after)
+                e = e.subs(self.prescribed).doit()
+            total += e
         return total
 
     @cached_property
@@ -520,7 +536,8 @@ class System:
         """Every symbol of the declaration (energies, forces, constraints, prescribed motion, bodies' masses,
         positions, inertia and orientation) except ``t`` — a superset of :attr:`parameters`, which holds only
         those that survive in the equations of motion."""
-        T = self.T_given if self.derivation == "structural" else self.T  # the bodies' symbols are added below
+        from_bodies = self.derivation == "structural" or self._T_declaration is not None
+        T = self.T_given if from_bodies else self.T  # the bodies' symbols are added below (T is not built)
         exprs = [T, self.V, self.P, self.rayleigh, *self.forces.values(), *self.prescribed.values()]
         for c in self.constraints:
             exprs.append(c.velocity)
@@ -705,6 +722,8 @@ def _not_a_coordinate(c) -> str:
 
 
 def _substitute_constraint(c, presc):
+    from .constraints import Differential, Holonomic, Nonholonomic
+
     def sub(x):
         return _sympify(x).subs(presc).doit()
 

@@ -30,7 +30,7 @@ from ..model.coordinates import coordinate_name, is_coordinate
 __all__ = ["Trajectory"]
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, repr=False)  # (its own __repr__)
 class Trajectory:
     """A simulated trajectory.
 
