@@ -543,20 +543,29 @@ def cached_source(eqs: Equations, options: str, generate: Callable[[], str]) -> 
     fingerprint = equations_fingerprint(eqs) if enabled() else None
     if fingerprint is None:
         return generate()
-    key = _digest("source", fingerprint, options, environment())
-    path = _entry_path("source", key, ".txt")
+    return _entry("source", _digest("source", fingerprint, options, environment()), ".txt",
+                  lambda payload: payload.decode("utf-8"), generate, lambda text: text.encode("utf-8"))
+
+
+def _entry(kind: str, key: str, suffix: str, load: Callable[[bytes], object], build: Callable[[], object],
+           dump: Callable[[object], bytes]):
+    """The value of the entry ``<kind>_<key><suffix>``: ``load(payload)`` of an intact entry (a hit), else
+    ``build()`` stored as ``dump(value)`` (a miss; a refusal too when the entry was there). An entry whose payload
+    ``load`` rejects — by raising or by returning None — is rebuilt; exceptions of ``build`` propagate."""
+    path = _entry_path(kind, key, suffix)
     payload = _read(path, key)
     if payload is not None:
         try:
-            text = payload.decode("utf-8")
-            _count("source", "hit")
-            return text
-        except UnicodeDecodeError:
-            pass
-    _refused_or_missing("source", path)
-    source = generate()
-    _write(path, key, source.encode("utf-8"))
-    return source
+            value = load(payload)
+        except Exception:  # noqa: BLE001 - an entry that does not load is rebuilt
+            value = None
+        if value is not None:
+            _count(kind, "hit")
+            return value
+    _refused_or_missing(kind, path)
+    value = build()
+    _write(path, key, dump(value))
+    return value
 
 
 #: compiled code by the SHA-256 of its source, in this process (bounded): a re-run in the same process neither
@@ -577,24 +586,16 @@ def cached_code(source: str, filename: str) -> CodeType:
     code = _CODE.get(digest)
     if code is not None:
         return code
-    key = _digest("code", digest, filename, environment()) if enabled() else None
-    path = _entry_path("code", key, ".pyc") if key is not None else None
-    payload = _read(path, key) if key is not None else None
-    if payload is not None:
-        try:
-            code = marshal.loads(payload)
-        except Exception:  # noqa: BLE001 - an entry that does not load is rebuilt
-            code = None
-        if isinstance(code, CodeType) and code.co_filename == filename:
-            _count("code", "hit")
-        else:
-            code = None
-    if code is None:
-        if key is not None:
-            _refused_or_missing("code", path)
-        code = compile(source, filename, "exec")
-        if key is not None:
-            _write(path, key, marshal.dumps(code))
+
+    def load(payload: bytes) -> CodeType | None:
+        code = marshal.loads(payload)
+        return code if isinstance(code, CodeType) and code.co_filename == filename else None
+
+    def build() -> CodeType:
+        return compile(source, filename, "exec")
+
+    code = (_entry("code", _digest("code", digest, filename, environment()), ".pyc", load, build, marshal.dumps)
+            if enabled() else build())
     if len(_CODE) >= _CODE_MEMO:
         _CODE.pop(next(iter(_CODE)))
     _CODE[digest] = code
@@ -649,18 +650,9 @@ def cached_arrays(eqs: Equations, kind: str, options: str, build: Callable[[], d
     fingerprint = equations_fingerprint(eqs) if enabled() else None
     if fingerprint is None:
         return build()
-    key = _digest(kind, fingerprint, options, environment())
-    path = _entry_path(kind, key, ".npys")
-    payload = _read(path, key)
-    if payload is not None:
-        try:
-            arrays = _unpack_arrays(payload)
-        except Exception:  # noqa: BLE001 - an entry that does not load is rebuilt
-            arrays = None
-        if arrays is not None and (accept is None or accept(arrays)):
-            _count(kind, "hit")
-            return arrays
-    _refused_or_missing(kind, path)
-    arrays = build()
-    _write(path, key, _pack_arrays(arrays))
-    return arrays
+
+    def load(payload: bytes) -> dict[str, np.ndarray] | None:
+        arrays = _unpack_arrays(payload)
+        return arrays if accept is None or accept(arrays) else None
+
+    return _entry(kind, _digest(kind, fingerprint, options, environment()), ".npys", load, build, _pack_arrays)

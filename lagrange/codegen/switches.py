@@ -15,6 +15,7 @@ import weakref
 
 import sympy as sp
 
+from ..budget import _postorder
 from ..derive.equations import Equations
 
 __all__ = ["switching_functions", "regularized_equations", "switched_equations"]
@@ -27,26 +28,11 @@ def switching_functions(eqs: Equations) -> list:
     Equations (a tree walk of the forcing costs about 0.1 ms, which repeated short runs would pay each time)."""
     if eqs not in _SWITCHES:
         # structural equations: the switches are in Q (the kinematics hold none), read without expanding M, f
-        found = _instances(eqs.structure.generalized_force if eqs.is_structural else eqs.forcing, sp.sign)
-        _SWITCHES[eqs] = tuple(sorted({a.args[0] for a in found}, key=sp.default_sort_key))
+        # each distinct subexpression once (the forcing shares most of its tree: 10-link pendulum, atoms() 8 ms)
+        forcing = eqs.structure.generalized_force if eqs.is_structural else eqs.forcing
+        found = {n.args[0] for n in _postorder(sp.Tuple(*forcing)) if isinstance(n, sp.sign)}
+        _SWITCHES[eqs] = tuple(sorted(found, key=sp.default_sort_key))
     return list(_SWITCHES[eqs])
-
-
-def _instances(exprs, cls: type) -> set:
-    """The subexpressions of ``exprs`` that are ``cls`` instances: ``atoms(cls)``, but each shared
-    subexpression walked once (derived forcing shares most of its tree: 10-link pendulum 8 ms → 2 ms)."""
-    seen: set[int] = set()
-    out = set()
-    stack = list(exprs)
-    while stack:
-        e = stack.pop()
-        if id(e) in seen:
-            continue
-        seen.add(id(e))
-        if isinstance(e, cls):
-            out.add(e)
-        stack.extend(e.args)
-    return out
 
 
 def _replace_in(eqs: Equations, mapping: dict, new_params: tuple = ()) -> Equations:

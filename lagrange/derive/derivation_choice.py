@@ -51,22 +51,21 @@ def _kinematic_expressions(b) -> list:
     return [b.mass, *b.inertia, *b.origin, *b.com, *b.R]
 
 
-def kinetic_declaration(T_given, bodies) -> tuple | None:
-    """Everything the kinetic energy of ``T_given`` and ``bodies`` is built from, as plain data, when that
-    pins T down without building it; else None.
+def kinetic_declaration(bodies) -> tuple | None:
+    """Everything the kinetic energy of ``bodies`` is built from, as plain data, when that pins T down without
+    building it; else None. For a declaration :func:`structural_refusal` accepts (no T given directly, only
+    Particles and RigidBodies, no Quaternion orientation, no integral, constant masses and inertias): the
+    caller checks that first.
 
     ``("bodies", (body, ...))`` with a body ``("Particle", m, (x, y, z))`` or ``("RigidBody", m, inertia (9),
     origin (3), com (3), orientation)`` and an orientation ``("EulerAngles", ψ, θ, φ)``,
     ``("RotationSequence", ((axis, angle), ...))`` or ``("matrix", R (9))`` — the fields ``kinetic_energy()``
     reads (Wells 2.37 for a particle, 8.10 with 8.11 or ``vee(RᵀṘ)`` for a rigid body), whose code is in
-    the derivation cache's source digest. None when T is given directly or from a body of another class
-    (a subclass too), a Quaternion orientation, an integral or a varying mass or inertia
-    (:func:`structural_refusal`), or an orientation of a subclass: then T itself is what identifies it.
-    A :class:`~lagrange.System` builds T only on first use when this is not None (a warm re-run loads its
-    equations by this key and never builds T), and checks the bodies' kinematics at declaration instead.
+    the derivation cache's source digest. None for an orientation of a subclass: then T itself is what
+    identifies it. A :class:`~lagrange.System` builds T only on first use when this is not None (a warm re-run
+    loads its equations by this key and never builds T), and checks the bodies' kinematics at declaration
+    instead.
     """
-    if structural_refusal(T_given, bodies) is not None:
-        return None
     out = []
     for b in bodies:
         if type(b) is Particle:

@@ -228,13 +228,13 @@ class System:
             problems.append("no kinetic energy: give T or bodies (e.g. Particle(m, (x, y)))")
         T_given = prep(0 if T is None else T, "T")
         wanted = derivation == "structural" or (derivation == "auto" and auto_structural(len(coords), bodies))
-        refusal = structural_refusal(T_given, bodies) if wanted else None  # (it builds each rotation matrix)
+        refusal = structural_refusal(T_given, bodies)  # (also a precondition of kinetic_declaration below)
         if derivation == "structural" and refusal is not None:
             problems.append(f"derivation='structural' is not available: {refusal}; use derivation='expanded'")
         structural = wanted and refusal is None
         # T from bodies whose fields pin it down is built on first access of .T (a warm re-run never builds it:
         # the derivation cache is keyed by these fields); the bodies' kinematics are checked instead of T
-        T_declaration = kinetic_declaration(T_given, bodies) if not problems else None
+        T_declaration = kinetic_declaration(bodies) if refusal is None and not problems else None
         from_bodies = structural or T_declaration is not None
         checked_bodies = tuple(b.subs(presc) for b in bodies) if presc and from_bodies else bodies
         kinematic_bodies = checked_bodies if structural else bodies
@@ -293,7 +293,7 @@ class System:
             self.T: sp.Expr = T_total
         self.derivation: str = "structural" if structural else "expanded"
         self._kinematic_bodies = kinematic_bodies
-        self._T_declaration = T_declaration if from_bodies else None
+        self._T_declaration = T_declaration
         self.T_given: sp.Expr = T_given
         self.V: sp.Expr = V_e
         self.P: sp.Expr = P_e
