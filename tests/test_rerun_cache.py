@@ -63,7 +63,7 @@ def test_fresh_process_rerun_hits_changed_model_misses_tampered_tape_refused(tmp
     assert cold["method"].startswith("taylor")
     for kind in ("derived", "source", "code", "tape"):
         assert cold["stats"][kind]["hit"] == 0 and cold["stats"][kind]["miss"] >= 1, (kind, cold["stats"])
-    tapes = sorted(tmp_path.glob("tape_*.npys"))
+    tapes = sorted(tmp_path.glob("tape_*.arrays"))
     assert len(tapes) == 1
     # closed form of the harmonic oscillator: x = 0.5 cos(2 t)
     assert np.allclose(cold["final"], [0.5 * np.cos(4.0), -1.0 * np.sin(4.0), 0.0][: len(cold["final"])],
@@ -80,7 +80,7 @@ def test_fresh_process_rerun_hits_changed_model_misses_tampered_tape_refused(tmp
     changed = _run(tmp_path, quartic=0.25)
     assert changed["stats"]["derived"]["miss"] == 1 and changed["stats"]["tape"] == {"hit": 0, "miss": 1,
                                                                                        "refused": 0}
-    assert len(list(tmp_path.glob("tape_*.npys"))) == 2
+    assert len(list(tmp_path.glob("tape_*.arrays"))) == 2
     assert not np.allclose(changed["final"], cold["final"])
 
     data = bytearray(tapes[0].read_bytes())
@@ -170,7 +170,7 @@ def test_loaded_tape_equals_built_tape_and_a_forged_one_is_refused(cache, monkey
     bad["code"][0, 3] = int(arrays["n_slots"]) + 5  # writes outside the tape's slots
     assert tape_module._tape_valid(arrays) and not tape_module._tape_valid(bad)
     monkeypatch.setenv(dc.ENV_VAR, "1")
-    entry = next(cache.glob("tape_*.npys"))
+    entry = next(cache.glob("tape_*.arrays"))
     key = entry.stem.split("_", 1)[1]
     dc._write(entry, key, dc._pack_arrays(bad))  # sealed with the right key: only the content check can catch it
     tape_module._TAPES.clear()
@@ -228,11 +228,14 @@ def test_mass_matrix_function_matches_the_reference_lambdify():
 def test_array_records_round_trip_and_refuse_damage():
     """The tape entry's container: names and dtypes survive; a truncated record, a repeated name, an object
     array or trailing bytes raise (the entry is then refused and rebuilt), never load as something else."""
-    arrays = {"code": np.arange(12, dtype=np.int32).reshape(3, 4), "x": np.linspace(0, 1, 5), "ok": np.array(True)}
+    arrays = {"code": np.arange(12, dtype=np.int32).reshape(3, 4), "x": np.linspace(0, 1, 5), "ok": np.array(True),
+              "transposed": np.arange(6.0).reshape(2, 3).T, "z": np.array([1 + 2j]), "u": np.array([3], np.uint8),
+              "empty": np.zeros((0, 3)), "big-endian": np.array([1.5, 2.5], dtype=">f8")}
     packed = dc._pack_arrays(arrays)
     back = dc._unpack_arrays(packed)
     assert list(back) == list(arrays)
-    assert all(back[k].dtype == v.dtype and np.array_equal(back[k], v) for k, v in arrays.items())
+    assert all(back[k].dtype == v.dtype and back[k].shape == v.shape and np.array_equal(back[k], v)
+               and back[k].flags.writeable for k, v in arrays.items())
     for damaged in (packed[:-3], packed + b"\x01", packed + packed[: len(packed) // 2]):
         with pytest.raises(Exception):  # noqa: B017, PT011 - numpy's or ours: any refusal will do
             dc._unpack_arrays(damaged)

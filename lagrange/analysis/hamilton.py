@@ -14,20 +14,19 @@ equations with the non-potential forces ``Q = F_q + ∂P/∂q̇ − ∂D/∂q̇`
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 import sympy as sp
 
 from ..conventions import t
 from ..errors import AnalysisError
 from ..model.coordinates import coordinate_name, to_functions
+from ..records import record
 from ..safe_sympify import sympify as _sympify
 from ..simplification import simplify
 
 __all__ = ["HamiltonianForm", "hamiltonian"]
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class HamiltonianForm:
     """H and the canonical equations in plain symbols q, p (and t).
 

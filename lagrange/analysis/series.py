@@ -17,13 +17,13 @@ About ``q = ∞`` (one coordinate) the series is in powers of ``1/q`` — the mu
 from __future__ import annotations
 
 from collections.abc import Mapping
-from dataclasses import dataclass
 
 import sympy as sp
 from sympy.core.function import AppliedUndef
 
 from ..errors import AnalysisError, SymbolicTimeoutError
 from ..model.coordinates import coordinate_name, is_coordinate, position_symbol, to_symbols
+from ..records import record
 from ..safe_sympify import sympify as _sympify
 from ..simplification import run_bounded
 
@@ -32,7 +32,7 @@ __all__ = ["PotentialSeries", "expand_potential"]
 _SERIES_SECONDS = 20.0
 
 
-@dataclass(frozen=True, slots=True)
+@record(frozen=True, slots=True)
 class PotentialSeries:
     r"""A truncated series of a potential.
 

@@ -29,7 +29,7 @@ system and reused for every operating point); without, symbolic (small systems, 
 from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass, field
+from dataclasses import field
 
 import numpy as np
 import scipy.linalg
@@ -38,6 +38,7 @@ import sympy as sp
 from ..conventions import t
 from ..errors import AnalysisError, LagrangeError
 from ..model.coordinates import coordinate_name, position_symbol, velocity_symbol
+from ..records import record
 from ..safe_sympify import sympify as _sympify
 from ..simplification import factor, simplify, solve
 from . import manifold
@@ -66,7 +67,7 @@ def _numeric_matrix(Mx, params: Mapping | None, what: str) -> np.ndarray:
     return np.array(out.evalf(), dtype=float)
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class LinearModel:
     """A linearization about a reference state.
 
@@ -375,7 +376,7 @@ def _unconstrained_symbolic(system, q0, v0, u0, inputs) -> LinearModel:
                        input_forces=simp(G))
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class Modes:
     """Numeric normal modes of ``a s̈ + c s = 0``.
 

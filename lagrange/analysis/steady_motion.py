@@ -23,13 +23,13 @@ or linearize about the steady motion directly on the constraint manifold, with t
 from __future__ import annotations
 
 from collections.abc import Mapping
-from dataclasses import dataclass
 
 import sympy as sp
 
 from ..conventions import t
 from ..errors import AnalysisError
 from ..model.coordinates import coordinate_name, position_symbol, to_functions, velocity_symbol
+from ..records import record
 from ..safe_sympify import sympify as _sympify
 from ..simplification import simplify, solve
 from .small_oscillations import LinearModel
@@ -37,7 +37,7 @@ from .small_oscillations import LinearModel
 __all__ = ["Routhian", "routhian", "steady_motion_conditions", "oscillations_about_steady_motion"]
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class Routhian:
     """R in plain symbols of the kept coordinates and the constant momenta ``p_<J>``."""
 

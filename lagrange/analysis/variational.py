@@ -20,7 +20,6 @@ keeps the energy error bounded; it is second order. Conservative, unconstrained 
 from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass
 
 import numpy as np
 import scipy.integrate
@@ -30,6 +29,7 @@ from ..codegen.numeric import bind_parameters
 from ..conventions import t
 from ..conventions import t as _t
 from ..errors import IntegrationError, LagrangeError
+from ..records import record
 from ..safe_sympify import sympify as _sympify
 from ..simplification import simplify
 
@@ -135,7 +135,7 @@ def _quad(f, span) -> float:
     return float(value)
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class VariationalResult:
     """Fixed-step results: times, positions and discrete momenta (steps+1, n), Newton iterations per step."""
 

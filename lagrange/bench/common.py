@@ -4,16 +4,15 @@ runner that imports them."""
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 import numpy as np
 
+from ..records import record
 from .problems import BenchProblem
 
 __all__ = ["EnergyRun", "initial_vector"]
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class EnergyRun:
     """Relative energy error ``|E(t) − E(0)| / |E(0)|`` along a long run."""
 

@@ -34,11 +34,12 @@ import subprocess
 import sys
 import tempfile
 import time
-from dataclasses import dataclass
 from functools import lru_cache
 from pathlib import Path
 
 import numpy as np
+
+from ..records import record
 
 __all__ = ["ROUTES", "FirstResult", "first_result", "first_result_once", "median_by_total", "routes_for",
            "import_times", "byte_compile_lagrange"]
@@ -83,7 +84,7 @@ _PRIME = {"taylor_primed": "from lagrange.integrate.taylor import interpreter; f
 _NO_C = ("taylor_numba_primed",)
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class FirstResult:
     """Seconds spent deriving, compiling and integrating (None when the route failed: see ``note``)."""
 

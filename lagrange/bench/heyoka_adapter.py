@@ -14,13 +14,13 @@ from __future__ import annotations
 import importlib.util
 import time
 from collections.abc import Mapping
-from dataclasses import dataclass
 
 import numpy as np
 import sympy as sp
 
 from ..codegen.numeric import bind_parameters
 from ..errors import BackendError
+from ..records import record
 
 __all__ = ["heyoka_available", "heyoka_version", "HeyokaModel", "heyoka_model", "COMPACT_OPS"]
 
@@ -39,7 +39,7 @@ def heyoka_version() -> str | None:
     return str(heyoka.__version__)
 
 
-@dataclass
+@record
 class HeyokaModel:
     """heyoka's ODE system for a lagrange System, and the time heyoka took to derive it."""
 

@@ -21,16 +21,16 @@ end of the run if it never does). For regular (quasi-periodic) motion the separa
 from __future__ import annotations
 
 from collections.abc import Mapping
-from dataclasses import dataclass
 
 import numpy as np
 
 from ..integrate.run import initial_state
+from ..records import record
 
 __all__ = ["ValidityHorizon", "validity_horizon", "divergence_time", "finite_time_lyapunov"]
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class ValidityHorizon:
     """Result of :func:`validity_horizon`.
 

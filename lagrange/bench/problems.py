@@ -22,7 +22,7 @@ from __future__ import annotations
 import math
 import re
 from collections.abc import Callable
-from dataclasses import dataclass, field
+from dataclasses import field
 
 import numpy as np
 import sympy as sp
@@ -35,12 +35,13 @@ from ..model.coordinates import coordinates, parameters
 from ..model.rigid_body import RigidBody
 from ..model.rotations import EulerAngles
 from ..model.system import System
+from ..records import record
 
 __all__ = ["BenchProblem", "PROBLEMS", "MAX_LINKS", "get_problem", "derivation_options", "kepler_state", "belt_state",
            "belt_stick_interval"]
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class BenchProblem:
     """One benchmark problem.
 

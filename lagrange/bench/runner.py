@@ -25,13 +25,14 @@ import math
 import statistics
 import time
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass, field
+from dataclasses import field
 
 import numpy as np
 from scipy.integrate import solve_ivp
 
 from ..errors import LagrangeError
 from ..integrate.options import FrictionOptions
+from ..records import record
 from .common import EnergyRun, _numba_ok, initial_vector  # noqa: F401 (their home until they moved)
 from .problems import BenchProblem
 
@@ -43,7 +44,7 @@ TOLERANCES = (1e-4, 1e-6, 1e-8, 1e-10, 1e-12)
 QUICK_TOLERANCES = (1e-5, 1e-8)
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class MethodSpec:
     """One curve of a diagram: how to integrate (see the module docstring for ``kind``)."""
 
@@ -55,7 +56,7 @@ class MethodSpec:
     options: tuple = ()  # extra simulate options, (key, value) pairs
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class Point:
     """One run: tolerance (or fixed step), median wall time [s], nfev, error, number of timed runs."""
 
@@ -66,7 +67,7 @@ class Point:
     runs: int
 
 
-@dataclass
+@record
 class Curve:
     """All runs of one method on one problem; ``note`` says why it is missing or stopped early."""
 
@@ -76,7 +77,7 @@ class Curve:
     note: str = ""
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class Reference:
     """The truth the errors are measured against, at the problem's measured times."""
 
@@ -86,7 +87,7 @@ class Reference:
     check: float | None = None  # closed form: distance of a DOP853 rtol 1e-13 run from it
 
 
-@dataclass
+@record
 class ProblemResult:
     problem: BenchProblem
     reference: Reference

@@ -9,7 +9,6 @@ Generated code sees the state as ``y0 .. y{2n-1}`` (positions then velocities), 
 from __future__ import annotations
 
 import weakref
-from dataclasses import dataclass
 
 import sympy as sp
 from sympy.simplify import cse_opts
@@ -17,6 +16,7 @@ from sympy.simplify import cse_opts
 from ..budget import check
 from ..conventions import t
 from ..derive.equations import Equations
+from ..records import record
 from ..symengine_bridge import FAILURES, Restorer, carries, symengine
 
 __all__ = ["FusedExpressions", "fuse", "rename_map", "numeric_arguments",
@@ -49,7 +49,7 @@ def numeric_arguments(eqs: Equations) -> tuple[sp.Symbol, tuple, list]:
     return ren[t], y, [ren[s] for s in eqs.numeric_parameters]
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class FusedExpressions:
     """CSE'd ``M`` (upper triangle, row-major) and ``f`` in generated-code names."""
 

@@ -13,13 +13,13 @@ from __future__ import annotations
 import math
 import weakref
 from collections.abc import Mapping
-from dataclasses import dataclass
 
 import numpy as np
 import sympy as sp
 
 from ..conventions import t
 from ..errors import ParameterError
+from ..records import record
 from .hamiltonian_source import check_hamiltonian, hamiltonian_source
 
 __all__ = ["HamiltonianModel", "hamiltonian_model", "generated_source", "compiled_module"]
@@ -28,7 +28,7 @@ _SOURCES: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
 _MODELS: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()  # Equations → {parameter values: model}
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class HamiltonianModel:
     n: int
     H: object  # H(t, z) -> float

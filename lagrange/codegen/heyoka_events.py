@@ -21,12 +21,12 @@ from __future__ import annotations
 
 import math
 import numbers
-from dataclasses import dataclass
 
 import numpy as np
 import sympy as sp
 
 from ..errors import MethodError
+from ..records import record
 
 __all__ = ["HeyokaEvent", "trace_event", "heyoka_events", "NonTerminalRecorder", "TerminalRecorder"]
 
@@ -180,7 +180,7 @@ def _terminal(event, k: int) -> int:
     raise MethodError(f"{_describe(event, k)}: terminal must be a bool or a non-negative int, got {raw!r}")
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class HeyokaEvent:
     """One user event, compiled form: ``expression`` (sympy over ``t``, ``y0 …``), ``terminal`` (0: record
     only; k ≥ 1: stop at the k-th occurrence), ``direction`` (+1 rising, −1 falling, 0 both); ``key`` (text

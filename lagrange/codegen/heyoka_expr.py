@@ -22,12 +22,12 @@ from __future__ import annotations
 
 import importlib.util
 import weakref
-from dataclasses import dataclass
 
 import sympy as sp
 
 from ..derive.equations import Equations
 from ..errors import BackendError
+from ..records import record
 from .cse import fuse
 from .tape import TapeError, _check_analytic
 
@@ -46,7 +46,7 @@ def heyoka_available() -> bool:
     return importlib.util.find_spec("heyoka") is not None
 
 
-@dataclass(frozen=True, eq=False)
+@record(frozen=True, eq=False)
 class HeyokaODEs:
     """``system``: heyoka's ``[(var, rhs), ...]`` over the state ``z = [q, v(, w)]``; ``n`` coordinates,
     ``nz`` state size (2n, or 2n + 1 with the work integral), ``n_params`` runtime parameters; ``compact``:
@@ -59,7 +59,7 @@ class HeyokaODEs:
     compact: bool
 
 
-@dataclass(frozen=True, eq=False)
+@record(frozen=True, eq=False)
 class HeyokaShape:
     """What a run needs to know of the heyoka system without building it: ``n`` coordinates, ``nz`` state
     size (2n, or 2n + 1 with the work integral), ``n_params`` runtime parameters."""

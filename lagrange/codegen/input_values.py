@@ -38,13 +38,13 @@ import inspect
 import math
 import numbers
 from collections.abc import Callable, Mapping
-from dataclasses import dataclass
 
 import numpy as np
 import sympy as sp
 
 from ..conventions import t as time_symbol
 from ..errors import InputError, IntegrationError, ParameterError
+from ..records import record
 
 __all__ = ["InputSchedule", "resolve_inputs", "VARYING_ROUTES", "input_help"]
 
@@ -59,7 +59,7 @@ def input_help(name: str = "u") -> str:
             "state y = [q, q_dot], or samples (t_samples, values)")
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class InputSchedule:
     """The values of a system's inputs along a run: ``schedule(t, y)`` → list of floats, one per input in the
     order of ``Equations.inputs``.

@@ -28,10 +28,10 @@ import sys
 import tempfile
 import types
 from collections.abc import Callable, Mapping
-from dataclasses import dataclass
 from pathlib import Path
 
 from ..errors import BackendError
+from ..records import record
 from .cache import atomic_write, cache_dir, read_verified, write_sealed
 
 __all__ = ["numba_rhs", "cache_dir", "cache_key", "write_module", "atomic_write", "import_module",
@@ -65,7 +65,7 @@ def cache_key(text: str) -> str:
     return hashlib.sha256(material.encode()).hexdigest()[:24]
 
 
-@dataclass
+@record
 class _Staged:
     """A module staged in this process: its text, its bundle's path and the bundle last read or written."""
 

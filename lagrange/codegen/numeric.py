@@ -26,7 +26,7 @@ import importlib.util
 import math
 import weakref
 from collections.abc import Callable, Mapping
-from dataclasses import dataclass, field, replace
+from dataclasses import field, replace
 from functools import cached_property
 
 import numpy as np
@@ -35,6 +35,7 @@ import sympy as sp
 from ..derive.equations import Equations
 from ..errors import BackendError, ParameterError, SingularMassMatrixError, SpecError
 from ..model.coordinates import coordinate_name
+from ..records import record
 
 __all__ = ["NumericModel", "ConstraintFunctions", "compile_equations", "bind_parameters", "BACKENDS"]
 
@@ -106,7 +107,7 @@ def bind_parameters(eqs: Equations, params: Mapping) -> np.ndarray:
     return np.array(values[:k] + signs + values[k:], dtype=float)
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class NumericModel:
     """A compiled system with bound parameters.
 

@@ -20,7 +20,6 @@ compiled model and never generates code itself (the rule stated in :mod:`lagrang
 from __future__ import annotations
 
 from collections.abc import Callable
-from dataclasses import dataclass
 
 import numpy as np
 import sympy as sp
@@ -28,6 +27,7 @@ import sympy as sp
 from ..conventions import t
 from ..derive.equations import Equations
 from ..errors import InputError
+from ..records import record
 from .cse import numeric_arguments, rename_map
 
 __all__ = ["jacobian_function", "power_function", "sliding_functions", "switched_pieces", "SwitchedPieces",
@@ -94,7 +94,7 @@ def sliding_functions(model) -> Callable:
     return lambda t_, y, p: fn(t_, list(y), list(p))
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class SwitchedPieces:
     """The numeric pieces of a run with frozen friction switches: ``model`` has the σ's among its parameters
     (after the ``nparam`` user parameters; σ = 1 bound, the inputs' constants after them), ``u(t, y, p)`` the

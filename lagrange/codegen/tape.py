@@ -24,13 +24,14 @@ analytic right-hand side (use an adaptive Runge–Kutta method for those systems
 from __future__ import annotations
 
 import weakref
-from dataclasses import dataclass, field
+from dataclasses import field
 
 import numpy as np
 import sympy as sp
 
 from ..derive.equations import Equations
 from ..errors import LagrangeError
+from ..records import record
 
 __all__ = ["Tape", "TapeError", "build_tape", "tape_of", "OPCODES"]
 
@@ -45,7 +46,7 @@ class TapeError(LagrangeError, TypeError):
     """The right-hand side holds an operation the Taylor method cannot expand (named in the message)."""
 
 
-@dataclass(frozen=True, eq=False)
+@record(frozen=True, eq=False)
 class Tape:
     """A model's tape (see the module docstring). ``const_code``/``code`` are (k, 4) int64 rows
     ``(op, a, b, out)``; ``const_vals``/``consts`` the matching float64 constants (numbers, exponents)."""
@@ -68,7 +69,7 @@ class Tape:
         return int(self.code.shape[0])
 
 
-@dataclass
+@record
 class _Builder:
     n_params: int
     next_slot: int
@@ -316,7 +317,7 @@ def _tape_valid(a: dict[str, np.ndarray]) -> bool:
 
 def tape_of(eqs: Equations) -> Tape:
     """:func:`build_tape` of ``eqs``, built once per Equations (equal equations share it) and kept in the
-    on-disk cache (:func:`lagrange.codegen.derivation_cache.cached_arrays`, entry ``tape_<key>.npys``): a
+    on-disk cache (:func:`lagrange.codegen.derivation_cache.cached_arrays`, entry ``tape_<key>.arrays``): a
     re-run of the same model in a new process loads it instead of running the CSE again."""
     if eqs not in _TAPES:
         from .derivation_cache import cached_arrays

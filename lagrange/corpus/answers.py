@@ -9,7 +9,7 @@ book (after any documented correction).
 from __future__ import annotations
 
 from collections.abc import Callable, Mapping, Sequence
-from dataclasses import dataclass, field
+from dataclasses import field
 
 import mpmath
 import numpy as np
@@ -17,6 +17,7 @@ import sympy as sp
 
 from ..conventions import t
 from ..model.coordinates import coordinate_name, to_symbols
+from ..records import record
 from ..simplification import SECONDS, run_bounded
 from .compare import Mismatch, agree, numeric_points
 
@@ -68,7 +69,7 @@ class Answer:
               parameters=eqs.parameters, what=what)
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class EquationsOfMotion(Answer):
     """The book's equations of motion (one per coordinate, any arrangement or scaling).
 
@@ -160,7 +161,7 @@ def _constant_ratio(a, b, state, eqs, ranges) -> bool:
     return all(abs(v - ref) <= 1e-12 * max(abs(ref), 1e-30) for v in values)
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class KineticEnergy(Answer):
     """T as printed in the book."""
 
@@ -171,7 +172,7 @@ class KineticEnergy(Answer):
         self._agree(system, system.T, self.T, "T", ranges)
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class PotentialEnergy(Answer):
     """V as printed (additive constants ignored: the gradients ∂V/∂q are compared)."""
 
@@ -184,7 +185,7 @@ class PotentialEnergy(Answer):
                         f"dV/d{coordinate_name(q)}", ranges)
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class PowerFunction(Answer):
     """Wells' P as printed (compared through ∂P/∂q̇, the forces it gives)."""
 
@@ -198,7 +199,7 @@ class PowerFunction(Answer):
                         f"dP/d{coordinate_name(q)}_dot", ranges)
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class GeneralizedForces(Answer):
     """Generalized forces per coordinate (only the coordinates listed are checked).
 
@@ -223,7 +224,7 @@ class GeneralizedForces(Answer):
             self._agree(system, got, expected, f"F_{coordinate_name(q)}", ranges)
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class MassMatrix(Answer):
     """The mass matrix M = ∂²T/∂q̇∂q̇."""
 
@@ -240,7 +241,7 @@ class MassMatrix(Answer):
                 self._agree(system, M[i, j], B[i, j], f"M[{i},{j}]", ranges)
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class EnergySplit(Answer):
     """Wells' ``T = Σ A q̇q̇ + Σ B q̇ + C`` (2.55); give any of A (matrix), B (list), C."""
 
@@ -263,7 +264,7 @@ class EnergySplit(Answer):
             self._agree(system, C, self.C, "C", ranges)
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class ConservedMomenta(Answer):
     """Ignorable coordinates and their constant momenta ``{q: p_q}``."""
 
@@ -278,7 +279,7 @@ class ConservedMomenta(Answer):
             self._agree(system, found[q], p, f"p_{coordinate_name(q)}", ranges)
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class JacobiIntegral(Answer):
     """The Jacobi integral h (or the energy T+V when nothing moves)."""
 
@@ -289,7 +290,7 @@ class JacobiIntegral(Answer):
         self._agree(system, system.jacobi_integral(), self.h, "h", ranges)
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class Quantity(Answer):
     """Any quantity computed from the system by ``compute(system)`` and compared with the book.
 
@@ -319,7 +320,7 @@ class Quantity(Answer):
             self._agree(system, got, exp, self.name, ranges, self.rtol)
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class TrajectoryValues(Answer):
     """Numbers from a simulation: ``values = {coordinate: [v(t_k) ...]}`` at ``times``.
 
@@ -347,7 +348,7 @@ class TrajectoryValues(Answer):
                 raise Mismatch(f"{q}: simulated {got} vs expected {list(vals)} (max error {err:.3g})")
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class ConstraintForce(Answer):
     """A force of constraint, checked along a simulated trajectory of the multiplier formulation.
 

@@ -29,10 +29,10 @@ import json
 import re
 import sys
 from collections import defaultdict
-from dataclasses import dataclass
 from pathlib import Path
 
 from ..errors import SpecError
+from ..records import record
 
 __all__ = ["CatalogCase", "ChapterCoverage", "parse_catalog", "parse_label", "cited_cases", "load_catalog",
            "case_coverage", "chapter_coverage", "uncovered_full", "format_table", "coverage_markdown", "main"]
@@ -41,7 +41,7 @@ CATALOG_NAME = "_catalog.json"
 _KINDS = {"ex": "Example", "p": "Problem", "sec": "Section", "eq": "Equation", "tab": "Table", "app": "Appendix"}
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class CatalogCase:
     """One case of the catalog: ``key`` (``"p2.16"``), ``chapter``, the catalog's ``label`` line (shortened),
     ``full`` (tagged [FULL] at least once), and where it is listed (``file:line``)."""
@@ -53,7 +53,7 @@ class CatalogCase:
     where: str
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class ChapterCoverage:
     """Coverage of one chapter: corpus problems, distinct book cases they cite, answers checked, misprints
     recorded, and the catalog's [FULL] cases covered and uncovered (keys)."""

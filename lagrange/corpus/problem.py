@@ -3,8 +3,9 @@
 from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass, field
+from dataclasses import field
 
+from ..records import record
 from .answers import Answer
 from .compare import Mismatch
 
@@ -37,7 +38,7 @@ class LazySystem:
         return repr(self._system) if self._system is not None else f"<System {self.name!r}: built on first use>"
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class Simulation:
     """Default numbers for ``lagrange simulate ID``: parameter values, initial state, end time."""
 
@@ -47,7 +48,7 @@ class Simulation:
     options: Mapping = field(default_factory=dict)
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class CheckResult:
     """The outcome of checking one answer of one problem (``detail`` says what disagreed)."""
 
@@ -57,7 +58,7 @@ class CheckResult:
     detail: str = ""
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class Problem:
     """One worked example or problem of Wells' *Lagrangian Dynamics*.
 

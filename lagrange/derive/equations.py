@@ -5,14 +5,16 @@ This is the boundary between the symbolic and the numeric stages: code generatio
 
 from __future__ import annotations
 
-from dataclasses import dataclass, fields
+from dataclasses import fields
 
 import sympy as sp
+
+from ..records import record
 
 __all__ = ["Equations"]
 
 
-@dataclass(frozen=True, eq=False)  # (its own __eq__ and __hash__ below)
+@record(frozen=True, eq=False)  # (its own __eq__ and __hash__ below)
 class Equations:
     """Lagrange's equations of a system in normal form, in plain symbols.
 

@@ -31,7 +31,7 @@ only the structure.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, fields, replace
+from dataclasses import fields, replace
 
 import sympy as sp
 
@@ -41,6 +41,7 @@ from ..model.bodies import Particle
 from ..model.coordinates import acceleration_symbol, position_symbol, to_symbols, velocity_symbol
 from ..model.inputs import is_input
 from ..model.rigid_body import RigidBody
+from ..records import record
 from .derivation_choice import DERIVATIONS, structural_refusal  # noqa: F401 - re-exported (__all__)
 from .equations import Equations
 from .lagrange import _tidy_force, gradient
@@ -50,7 +51,7 @@ __all__ = ["PointMass", "Rotor", "Structure", "StructuralEquations", "structural
            "structural_refusal", "DERIVATIONS"]
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class PointMass:
     """A particle, or a rigid body's centre of mass: ``mass``, the nonzero entries ``((i, j), ∂x_i/∂q_j)`` of
     J (``i`` the Cartesian component 0–2), ``velocity_bias`` ``∂x/∂t`` and ``acceleration_bias`` ``a`` (3 each),
@@ -63,7 +64,7 @@ class PointMass:
     name: str = ""
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class Rotor:
     """A rigid body's rotation: ``inertia`` (3×3 tensor about the centre of mass, body axes), the nonzero
     entries ``((i, j), ∂ω_i/∂q̇_j)`` of W, ``omega_bias`` ``ω_t`` and ``acceleration_bias`` ``α`` (body axes)."""
@@ -75,7 +76,7 @@ class Rotor:
     name: str = ""
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class Structure:
     """What generated code needs to assemble ``M q̈ = f``: the point masses, the rotors and
     ``generalized_force`` ``Q`` (n expressions). T in the compact per-body form (not expanded) follows from them

@@ -30,7 +30,6 @@ Pbar is the geometric centre (the mean of the four vertices).
 from __future__ import annotations
 
 from collections.abc import Mapping
-from dataclasses import dataclass
 from typing import NamedTuple
 
 import numpy as np
@@ -42,6 +41,7 @@ from ..model.bodies import Particle
 from ..model.coordinates import coordinate_name, coordinates, is_coordinate, parameters
 from ..model.rotations import EulerAngles
 from ..model.system import System
+from ..records import record
 from .pair_dg import DGResult, PairSystem
 
 __all__ = ["EXAMPLES", "Example", "initial_vertices", "molecular_model", "run_molecular", "rigid_system",
@@ -53,7 +53,7 @@ A_PAIR = 1.0e6
 G = 0.980
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class Example:
     """One of the paper's examples: spin speed V, tilt α (degrees), the four masses."""
 
@@ -248,7 +248,7 @@ def run_rigid(ex: Example, t_end: float = 110.0, *, t_eval=None, rtol: float = 1
     return RigidRun(system, sol, V)
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class Summary:
     """What the paper reports of a run: the path of P1 in the plane, of Pbar, Pbar's height range, the fall."""
 

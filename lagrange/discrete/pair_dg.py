@@ -53,13 +53,13 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
-from dataclasses import dataclass
 
 import numpy as np
 import sympy as sp
 
 from ..codegen.source import print_expr
 from ..errors import DeclarationError, InitialConditionError, IntegrationError
+from ..records import record
 from ..simplification import is_zero
 
 __all__ = ["divided_difference", "PairSystem", "DGResult", "SOLVERS"]
@@ -449,7 +449,7 @@ def _module(source: str):
     return import_module(*write_module("pairdg", "import math\nimport numpy as np\nimport numba\n" + source))
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class DGResult:
     """A discrete-gradient run.
 

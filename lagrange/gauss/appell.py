@@ -23,8 +23,6 @@ below ``max_ops`` operations. What remains is reported **undecided** (numericall
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 import numpy as np
 import sympy as sp
 
@@ -32,12 +30,13 @@ from ..conventions import t
 from ..model.bodies import Particle
 from ..model.coordinates import coordinate_name, to_symbols
 from ..model.rigid_body import RigidBody
+from ..records import record
 from ..simplification import is_zero
 
 __all__ = ["AppellResult", "appell_identity", "acceleration_energy"]
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class AppellResult:
     """``status``: ``"verified"``, ``"failed"``, ``"undecided"`` or ``"not applicable"``; ``per_coordinate``:
     ``{name: status}``; ``detail``: the counterexample or the reason."""

@@ -16,10 +16,10 @@ to the size of the quantities involved — zero up to quadrature and integration
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 import numpy as np
 from scipy.integrate import cumulative_simpson
+
+from ..records import record
 
 __all__ = ["momentum", "angular_momentum", "kinetic_energy", "BalanceReport", "balance_residuals",
            "point_balance"]
@@ -49,7 +49,7 @@ def kinetic_energy(masses, v) -> np.ndarray:
     return 0.5 * np.einsum("k,...ki,...ki->...", m, v, v)
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class BalanceReport:
     """Largest relative residual of each balance law along a run.
 

@@ -23,13 +23,14 @@ the Gauss solve shows no external force or moment at any sampled state.
 from __future__ import annotations
 
 from collections.abc import Mapping
-from dataclasses import dataclass, field
+from dataclasses import field
 
 import numpy as np
 from scipy.integrate import cumulative_simpson
 
 from ..errors import LagrangeError, ParameterError, SingularMassMatrixError
 from ..model.coordinates import coordinate_name
+from ..records import record
 from .kkt import solve_least_constraint
 from .masspoints import MassPointModel, NotApplicable, declared_symbols, mass_point_model
 
@@ -40,7 +41,7 @@ DEFAULT_Q_RANGE = (0.15, 0.85)
 DEFAULT_QD_RANGE = (-0.85, 0.85)
 
 
-@dataclass(frozen=True, slots=True)
+@record(frozen=True, slots=True)
 class SampleComparison:
     """One sampled state: ``accel_error`` (Cartesian ẍ), ``qdd_error`` (q̈) and ``energy_error`` (T of the
     points vs the engine's T), each relative; the state ``t``, ``y = [q, q̇]``; ``redundant`` constraint rows."""
@@ -57,7 +58,7 @@ class SampleComparison:
         return max(self.accel_error, self.qdd_error, self.energy_error)
 
 
-@dataclass(frozen=True, slots=True)
+@record(frozen=True, slots=True)
 class BalanceDiagnostics:
     """Balance laws along a short run: ``power_residual`` (relative, ``None`` when the run failed),
     ``momentum_drift`` / ``angular_momentum_drift`` (relative; ``None`` when the system is not free of
@@ -74,7 +75,7 @@ class BalanceDiagnostics:
         return all(v < tol for v in vals)
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class GaussCheck:
     """Outcome of :func:`check_gauss`; ``str()`` gives a readable report.
 

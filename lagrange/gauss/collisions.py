@@ -23,18 +23,17 @@ an outcome that would create kinetic energy raises :class:`~lagrange.errors.Coll
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 import numpy as np
 
 from ..errors import CollisionError
+from ..records import record
 from .balance import kinetic_energy, momentum
 from .kkt import solve_least_constraint
 
 __all__ = ["CollisionOutcome", "ball_collision", "contact_row", "impact"]
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class CollisionOutcome:
     """Velocities after the collision ``velocities`` (N, 3), the impulses ``m Δv`` (N, 3), the total
     ``momentum_change`` (3,) and ``energy_change`` (≤ 0)."""

@@ -30,11 +30,11 @@ distinguishes:
 from __future__ import annotations
 
 from collections.abc import Sequence
-from dataclasses import dataclass
 
 import numpy as np
 
 from ..errors import InconsistentConstraintError, SingularMassMatrixError
+from ..records import record
 
 __all__ = ["LeastConstraintSolution", "solve_least_constraint", "RANK_TOL", "CONSISTENCY_TOL"]
 
@@ -44,7 +44,7 @@ RANK_TOL = 1e-10
 CONSISTENCY_TOL = 1e-8
 
 
-@dataclass(frozen=True, slots=True)
+@record(frozen=True, slots=True)
 class LeastConstraintSolution:
     """Minimiser of the least-constraint program.
 

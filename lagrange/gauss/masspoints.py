@@ -24,7 +24,6 @@ P) and the q-level constraints ``g = A qÌ‡ + b = 0`` differentiated once, ``A qÌ
 from __future__ import annotations
 
 from collections.abc import Mapping
-from dataclasses import dataclass
 
 import numpy as np
 import sympy as sp
@@ -34,6 +33,7 @@ from ..errors import ParameterError
 from ..model.bodies import Particle
 from ..model.coordinates import position_symbol, to_symbols, velocity_symbol
 from ..model.rigid_body import RigidBody
+from ..records import record
 
 __all__ = ["NotApplicable", "MassPointModel", "mass_point_model", "equimomental_offsets", "declared_symbols"]
 
@@ -69,7 +69,7 @@ def equimomental_offsets(mass: float, J_c) -> tuple[np.ndarray, np.ndarray]:
     return off, np.concatenate([[mass - 2.0 * mu.sum()], np.repeat(mu, 2)])
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class MassPointModel:
     """Numeric mass-point kinematics and force data of a system (parameters bound).
 

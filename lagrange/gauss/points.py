@@ -25,7 +25,7 @@ accelerations and non-unique λ (reported); inconsistent ones raise
 from __future__ import annotations
 
 from collections.abc import Callable, Mapping, Sequence
-from dataclasses import dataclass, field
+from dataclasses import field
 
 import numpy as np
 import sympy as sp
@@ -33,6 +33,7 @@ from scipy.integrate import solve_ivp
 
 from ..conventions import t as T_SYM
 from ..errors import DeclarationError
+from ..records import record
 from .kkt import CONSISTENCY_TOL, LeastConstraintSolution, solve_least_constraint
 
 __all__ = [
@@ -52,7 +53,7 @@ def point_symbols(n: int) -> tuple[np.ndarray, np.ndarray]:
     return X, V
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class Link:
     """Points ``i`` and ``j`` kept at distance ``length`` (``φ = ½(|x_j − x_i|² − L²)``; internal)."""
 
@@ -80,7 +81,7 @@ def _path_functions(path):
     return lambda t: tuple(np.array(c, dtype=float).ravel() * np.ones(3) for c in f(t))
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class Dragging:
     """Point ``point`` kept at distance ``length`` from the prescribed path ``x_d(t)`` (R3).
 
@@ -130,7 +131,7 @@ class _Symbolic:
         return float(phi), g, float(-(ud @ Hs @ ud + 2 * gt @ ud + float(ptt))), float(pt)
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class Surface:
     """Point ``point`` on the surface ``φ(x, y, z, t) = 0`` written in :data:`SURFACE_SYMBOLS` (external;
     the force is ``λ ∇φ``)."""
@@ -151,7 +152,7 @@ class Surface:
         return A, np.array([b]), np.array([phi]), np.array([pt])
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class PointConstraint:
     """A holonomic ``φ(x_0..x_{N−1}, t) = 0`` in the position symbols of :func:`point_symbols` (external
     unless ``external=False``)."""
@@ -189,7 +190,7 @@ def _symbolic_forces(forces: Mapping, n: int) -> Callable:
     return F
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class GaussAccelerations:
     """The result of one least-constraint solve.
 
@@ -224,7 +225,7 @@ class GaussAccelerations:
         return self.applied + self.constraint_forces[ext].sum(axis=0)
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class PointSystem:
     """N mass points with applied forces and constraints (frozen, validated).
 
@@ -355,7 +356,7 @@ class PointSystem:
         return x.reshape(self.n, 3), v.reshape(self.n, 3)
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class PointTrajectory:
     """Positions and velocities of a point system over time: ``t`` (k,), ``x`` and ``v`` (k, N, 3);
     ``violation`` (k,) is ``max |φ|`` before each projection."""

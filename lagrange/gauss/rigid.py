@@ -20,11 +20,11 @@ from __future__ import annotations
 
 import itertools
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass
 
 import numpy as np
 from scipy.integrate import solve_ivp
 
+from ..records import record
 from .points import Link, PointSystem
 
 __all__ = ["cloud_inertia", "rigid_cloud", "rigid_velocities", "angular_velocity", "newton_euler_accelerations",
@@ -92,7 +92,7 @@ def newton_euler_accelerations(masses, x, v, F) -> np.ndarray:
     return F.sum(axis=0) / M + np.cross(wd, r) + np.cross(w, np.cross(w, r))
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class RigidMotion:
     """A rigid-body motion: ``t`` (k,), orientation ``Q`` (k, 3, 3) (body → space), space-frame ``omega``
     (k, 3), angular momentum about the centre of mass ``H = J ω`` (k, 3), centre ``x_c`` and ``v_c`` (k, 3)."""

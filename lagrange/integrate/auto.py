@@ -46,12 +46,12 @@ from __future__ import annotations
 import math
 import time
 from collections.abc import Callable
-from dataclasses import dataclass
 from functools import lru_cache
 
 import numpy as np
 
 from ..errors import LagrangeError
+from ..records import record
 from . import registry
 
 __all__ = ["Stiffness", "estimate_stiffness", "difference_jacobian", "decay_bound", "taylor_seconds",
@@ -71,7 +71,7 @@ IMPLICIT_SECONDS = 0.15
 SERIES_SPEEDUP, SERIES_JIT_SECONDS = 3.0, 0.1
 
 
-@dataclass(frozen=True, slots=True)
+@record(frozen=True, slots=True)
 class Stiffness:
     """Eigenvalue estimates of the Jacobian of ``f`` at one state.
 
@@ -273,7 +273,7 @@ def _candidates(features: frozenset) -> tuple[str, ...]:
                  if m.adaptive and m.name != "heyoka" and all(getattr(m, f) for f in features))
 
 
-@dataclass(frozen=True, slots=True)
+@record(frozen=True, slots=True)
 class _Context:
     """What :func:`choose` knows about the request."""
 

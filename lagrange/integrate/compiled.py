@@ -35,7 +35,6 @@ import importlib.util
 import time
 import warnings
 from collections.abc import Callable
-from dataclasses import dataclass
 from enum import Enum
 from functools import cache
 from pathlib import Path
@@ -46,6 +45,7 @@ import numpy as np
 from ..codegen.numeric import NumericModel
 from ..errors import BackendError, IntegrationError, IntegrationInterrupted, MethodError
 from ..model.coordinates import state_text
+from ..records import record
 from ..results.trajectory import Trajectory
 
 __all__ = ["LOOPS", "LOOP_METHODS", "LoopStatus", "LoopResult", "choose_loop", "loop_backend", "kernel", "loops",
@@ -91,7 +91,7 @@ class LoopStatus(Enum):
 _STATUS_OF_CODE = {s.value[0]: s for s in LoopStatus}
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class LoopResult:
     """Raw output of one compiled run: ``t`` (k,), ``z`` (k, nz) at the output times reached, the time and
     state where the loop stopped, and counters."""

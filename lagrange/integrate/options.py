@@ -20,11 +20,11 @@ from __future__ import annotations
 
 import math
 import warnings
-from dataclasses import dataclass
 
 import numpy as np
 
 from ..errors import MethodError, OptionError
+from ..records import record
 
 __all__ = ["FrictionOptions", "Stabilization", "StepOptions", "FRICTIONS", "STABILIZATIONS", "MAX_POINTS",
            "MAX_STEPS", "check_run_options", "merge_deprecated", "as_friction", "as_stabilization", "as_step"]
@@ -53,7 +53,7 @@ def _choice(option: str, value, choices: tuple[str, ...]) -> str:
     return value
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class FrictionOptions:
     """How dry-friction ``sign()`` switches are integrated (:mod:`lagrange.integrate.switching`).
 
@@ -75,7 +75,7 @@ class FrictionOptions:
         return self.treatment if self.treatment == "events" else f"{self.treatment} (epsilon {self.epsilon:g})"
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class Stabilization:
     """Constraint drift control (:mod:`lagrange.integrate.constrained`).
 
@@ -102,7 +102,7 @@ class Stabilization:
         return self.method
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class StepOptions:
     """The step of a fixed-step (geometric) method.
 

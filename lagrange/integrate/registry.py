@@ -25,14 +25,14 @@ from __future__ import annotations
 
 import importlib
 from collections.abc import Callable
-from dataclasses import dataclass
 
 from ..errors import InputError, MethodError
+from ..records import record
 
 __all__ = ["Method", "METHODS", "get", "find", "names", "supporting", "check_supported", "table"]
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class Method:
     """One integration method of :func:`~lagrange.integrate.run.simulate` and what it can do.
 

@@ -5,17 +5,17 @@ friction treatment applied, the input values split into constants and a schedule
 from __future__ import annotations
 
 from collections.abc import Mapping
-from dataclasses import dataclass
 
 import numpy as np
 
 from ..codegen.numeric import NumericModel
+from ..records import record
 from .options import FrictionOptions, Stabilization, StepOptions
 
 __all__ = ["RunRequest"]
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class RunRequest:
     """A validated simulation request.
 

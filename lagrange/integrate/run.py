@@ -18,7 +18,7 @@ import numpy as np
 from ..codegen.numeric import NumericModel
 from ..errors import IntegrationError, LagrangeError, MethodError
 from ..results.trajectory import Trajectory
-from . import auto, registry  # auto eagerly: its import would land in the first method="auto" call
+from . import registry  # (auto is imported where method="auto" is resolved: a named method never loads it)
 from .options import _DEPRECATED as _UNSET
 from .options import StepOptions, check_run_options, merge_deprecated
 from .prepare import GimbalLockWarning, check_model, initial_state, model_for, split_inputs
@@ -43,6 +43,7 @@ def choose_method(eqs, params=None, t_span=(0.0, 1.0), y0=None, rtol: float | No
     if params is not None and y0 is not None:
         built = _decision_model(eqs, params, None, {}, None)
         fun = None if built is None else built.fun
+    from . import auto
     return auto.choose(eqs, fun, float(t_span[0]), y0, t_end=float(t_span[1]),
                        rtol=1e-9 if rtol is None else rtol, backend=backend or "python", needs=needs)
 
@@ -205,6 +206,7 @@ def simulate(
         # given model: that model is of the structural equations)
         expanded = (system.expanded_at_hand() if eqs.is_structural and model is None
                     and hasattr(system, "expanded_at_hand") else None)
+        from . import auto
         name, why = auto.choose(eqs, None if decided is None else decided.fun, t0, y0, t_end=t1, rtol=rtol,
                                 backend=backend if model is None else model.backend, needs=needs,
                                 projection=bool(eqs.m) and st.method == "projection", taylor_equations=expanded)

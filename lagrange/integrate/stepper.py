@@ -25,18 +25,20 @@ partial trajectory.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import field
 
 import numpy as np
 from scipy.integrate import BDF, DOP853, LSODA, RK23, RK45, OdeSolver, Radau
 from scipy.optimize import brentq
+
+from ..records import record
 
 __all__ = ["step_loop", "STEPPABLE", "StepResult", "StepLog", "recording", "interrupt_of", "interrupted_run"]
 
 STEPPABLE = {"RK23": RK23, "RK45": RK45, "DOP853": DOP853, "Radau": Radau}
 
 
-@dataclass
+@record
 class StepResult:
     t: np.ndarray
     y: np.ndarray  # (n_state, n_times), like solve_ivp

@@ -41,7 +41,6 @@ chatters forever. lagrange offers two documented treatments (``simulate(friction
 
 from __future__ import annotations
 
-import dataclasses
 import importlib
 import math
 import warnings
@@ -51,6 +50,7 @@ import numpy as np
 from scipy.integrate import solve_ivp
 
 from ..errors import IntegrationError
+from ..records import record
 from .faults import collapse_error, state_text_of
 
 __all__ = ["run_switched", "Transition"]
@@ -276,7 +276,7 @@ def _collect_events(res, K, user_events, t_events, y_events):
     return fired, user_stop
 
 
-@dataclasses.dataclass
+@record
 class _Result:
     t: np.ndarray
     y: np.ndarray

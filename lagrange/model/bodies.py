@@ -17,13 +17,13 @@ relative to an inertial frame (Wells 2.37):
 from __future__ import annotations
 
 from collections.abc import Sequence
-from dataclasses import dataclass
 from typing import TYPE_CHECKING, Protocol, runtime_checkable
 
 import sympy as sp
 
 from ..conventions import t
 from ..errors import DeclarationError
+from ..records import record
 from ..safe_sympify import sympify as _sympify
 from .coordinates import normalize_time, time_derivative, to_functions, to_symbols
 
@@ -61,7 +61,7 @@ class Body(Protocol):
     def subs(self, mapping) -> Body: ...
 
 
-@dataclass(frozen=True, eq=False, init=False, repr=False)  # (its own __init__ and __repr__)
+@record(frozen=True, eq=False, init=False, repr=False)  # (its own __init__ and __repr__)
 class Particle:
     """A point mass at ``position`` (1 to 3 Cartesian components, inertial frame).
 
@@ -112,7 +112,7 @@ class Particle:
         return f"Particle{label}(mass={self.mass}, position={tuple(self.position)})"
 
 
-@dataclass(frozen=True, eq=False, init=False, repr=False)  # (its own __init__ and __repr__)
+@record(frozen=True, eq=False, init=False, repr=False)  # (its own __init__ and __repr__)
 class MaterialPoint:
     r"""The material point of a rigid ``body`` whose body coordinates (relative to the body origin O, along
     the body axes) are ``r_body`` now.
@@ -196,7 +196,7 @@ class MaterialPoint:
         return f"MaterialPoint{label}(r_body={tuple(self.r_body)})"
 
 
-@dataclass(frozen=True, eq=False, init=False)  # (its own __init__)
+@record(frozen=True, eq=False, init=False)  # (its own __init__)
 class Force:
     r"""A force ``vector`` (1–3 Cartesian components, inertial axes) applied at a particle, a material point
     of a rigid body, or a geometric point.

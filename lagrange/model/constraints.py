@@ -21,11 +21,11 @@ from __future__ import annotations
 import itertools
 import warnings
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass
 
 import sympy as sp
 
 from ..conventions import t
+from ..records import record
 from ..safe_sympify import sympify as _sympify
 from ..simplification import is_zero
 from ..symengine_bridge import FAILURES, carries, jacobian, symengine
@@ -63,7 +63,7 @@ def _expr(e):
     return e
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class Holonomic:
     """``φ(q, t) = 0``; ``unilateral=True`` marks a contact that can only push (see simulate events)."""
 
@@ -75,7 +75,7 @@ class Holonomic:
         normalize_fields(self)  # sympy.physics.mechanics dynamicsymbols are accepted
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class Rough:
     """A rough holonomic constraint ``φ(q, t) = 0`` with Coulomb friction (Wells 12.5).
 
@@ -111,7 +111,7 @@ class Rough:
         normalize_fields(self)
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class Nonholonomic:
     """``Σ a_j q̇_j + a_t = 0`` written in the velocities."""
 
@@ -122,7 +122,7 @@ class Nonholonomic:
         normalize_fields(self)
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class Differential:
     """Wells' differential form ``Σ_j a_j dq_j + a_t dt = 0`` from its coefficients ``{q_j: a_j}``."""
 
@@ -138,7 +138,7 @@ class Differential:
         return sum((_sympify(a) * q.diff(t) for q, a in self.coefficients.items()), sp.S.Zero) + _sympify(self.dt)
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class ConstraintSpec:
     """A validated constraint: ``kind`` is ``"holonomic"`` or ``"nonholonomic"``; ``velocity`` is g = A q̇ + b
     in the coordinate functions; ``position`` is φ for holonomic ones (else None)."""

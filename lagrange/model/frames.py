@@ -21,12 +21,11 @@ ellipsoid with Z₁ along the normal and uses that R.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 import sympy as sp
 
 from ..conventions import t
 from ..errors import DeclarationError
+from ..records import record
 from ..safe_sympify import sympify as _sympify
 from ..simplification import trigsimp
 from .bodies import as_vector
@@ -108,7 +107,7 @@ def _elementary_rate(R: sp.Matrix) -> sp.Matrix | None:
     return None
 
 
-@dataclass(frozen=True, slots=True)
+@record(frozen=True, slots=True)
 class Ellipsoid:
     r"""An oblate ellipsoid of revolution (semi-axes ``a`` equatorial ≥ ``b`` polar, metres), Wells ch. 14.
 

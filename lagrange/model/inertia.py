@@ -31,12 +31,12 @@ code generation, or in :meth:`Inertia.principal_axes_numeric`).
 from __future__ import annotations
 
 from collections.abc import Iterable, Mapping, Sequence
-from dataclasses import dataclass
 
 import numpy as np
 import sympy as sp
 
 from ..errors import DeclarationError
+from ..records import record
 from ..safe_sympify import sympify as _sympify
 from ..simplification import is_zero, simplify
 
@@ -114,7 +114,7 @@ def _trigonometric_roots(J: sp.Matrix) -> list[sp.Expr]:
     return [q + 2 * p * sp.cos(phi + 2 * sp.pi * k / 3) for k in range(3)]
 
 
-@dataclass(frozen=True, slots=True)
+@record(frozen=True, slots=True)
 class Inertia:
     r"""Moments and (positive, Wells 7.1) products of inertia about one point and one set of axes.
 

@@ -22,11 +22,10 @@ the system itself — valid at every orientation (a sleeping top).
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 import sympy as sp
 
 from ..conventions import t
+from ..records import record
 from ..safe_sympify import sympify as _sympify
 from ..simplification import trigsimp
 from .coordinates import normalize_fields, time_derivative
@@ -62,7 +61,7 @@ def rot_z(a) -> sp.Matrix:
     return sp.Matrix([[c, -s, 0], [s, c, 0], [0, 0, 1]])
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class EulerAngles:
     """Wells' Euler angles (z-x-z): ψ precession, θ nutation, φ spin (Fig. 8-16, Table 8.2).
 
@@ -104,7 +103,7 @@ class EulerAngles:
         return ()
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class Quaternion:
     """Unit quaternion orientation ``(q0, q1, q2, q3)`` (scalar first); adds ``Σ q_i² − 1 = 0``.
 

@@ -16,7 +16,7 @@ forgotten force, a wrong sign in P or a bad integration shows up there.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import field
 from functools import cached_property
 from pathlib import Path
 
@@ -26,11 +26,12 @@ import sympy as sp
 from ..codegen.numeric import NumericModel
 from ..conventions import VELOCITY_SUFFIX, t
 from ..model.coordinates import coordinate_name, is_coordinate
+from ..records import record
 
 __all__ = ["Trajectory"]
 
 
-@dataclass(frozen=True, repr=False)  # (its own __repr__)
+@record(frozen=True, repr=False)  # (its own __repr__)
 class Trajectory:
     """A simulated trajectory.
 

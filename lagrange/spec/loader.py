@@ -57,7 +57,7 @@ import math
 import runpy
 import tomllib
 import unicodedata
-from dataclasses import dataclass, field
+from dataclasses import field
 from pathlib import Path
 
 from ..conventions import VELOCITY_SUFFIX, t
@@ -67,6 +67,7 @@ from ..model.coordinates import coordinates as make_coordinates
 from ..model.coordinates import parameters as make_parameters
 from ..model.inputs import inputs as make_inputs
 from ..model.system import System
+from ..records import record
 from .expressions import MAX_TERMS, parse_expression
 
 __all__ = ["LoadedSpec", "load_spec", "load_toml"]
@@ -82,7 +83,7 @@ _POSITION_TERMS = 100
 MAX_SPEC_BYTES = 1_000_000
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class LoadedSpec:
     system: System
     params: dict = field(default_factory=dict)

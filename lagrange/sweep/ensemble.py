@@ -20,12 +20,11 @@ Outputs at ``t_eval`` use each method's dense output (as ``solve_ivp`` does). Un
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 import numpy as np
 from scipy.integrate import DOP853, RK23, RK45
 
 from ..errors import IntegrationError, LagrangeError, MethodError
+from ..records import record
 
 __all__ = ["integrate_ensemble", "EnsembleResult", "METHODS"]
 
@@ -33,7 +32,7 @@ METHODS = {"RK23": RK23, "RK45": RK45, "DOP853": DOP853}
 _SAFETY, _MIN_FACTOR, _MAX_FACTOR = 0.9, 0.2, 10.0
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class EnsembleResult:
     """States of every member at the output times.
 
