@@ -25,10 +25,14 @@ loaded). *Without imports*: heyoka's child reports the CPU spent up to the end o
 subtracted from its warm run; for lagrange a third process (warm too) imports, before the clock, exactly the
 modules its plain warm run loaded and triggers sympy's deferred imports (its first ``Add``), and its CPU after
 that is the column (lagrange's own submodules load during the run and are counted in it). JIT and compile
-costs are always counted. lagrange's modules are byte-compiled first (``compileall``, as ``pip install``
-does; without it ``PYTHONDONTWRITEBYTECODE=1``, set on this machine, makes every fresh process recompile
-lagrange's sources: about 0.3 s of a warm re-run). Medians of ``--repeats`` runs; the ratio columns are the
-median of per-repeat ratios of runs made side by side; the machine is shared, so read ratios.
+costs are always counted. The children import lagrange as a user's install has it: this source tree installed
+with ``pip install --no-deps --target`` into a temporary directory (byte-compiled, with the C interpreter's
+extension module; each run reports which C interpreter it loaded). ``--from-source`` runs the source tree
+instead, byte-compiled first (``compileall``; without it ``PYTHONDONTWRITEBYTECODE=1``, set on this machine,
+makes every fresh process recompile lagrange's sources: about 0.3 s of a warm re-run), where the C
+interpreter is the library built at run time (finding it costs ``sysconfig``'s compiler lookup). Medians of
+``--repeats`` runs; the ratio columns are the median of per-repeat ratios of runs made side by side; the
+machine is shared, so read ratios.
 
 Run ``python benchmarks/rerun.py`` (``--quick``: the double pendulum, taylor vs heyoka, one repeat, under a
 minute; ``--taylor-only --repeats 7 --out rerun_taylor.md``: the taylor route against both heyoka modes on all
@@ -98,7 +102,9 @@ initial = dict(zip(list(coords) + [q.diff(lg.t) for q in coords], y0))
 options = {} if method == "default" else {"method": method}
 tr = system.simulate(t_end, initial, params, backend=backend, rtol=1e-10, atol=1e-10, n_points=1001, **options)
 from lagrange.codegen.derivation_cache import statistics
+from lagrange.codegen.c_interpreter import extension_path
 print(json.dumps({"import_cpu": c1 - c0, "final": tr.y[-1, : len(y0) // 2].tolist(), "label": tr.method,
+                  "c_interpreter": "extension module" if extension_path() else "library built at run time",
                   "cache": statistics(), "loaded": [m for m in "HEAVY".split(",") if m in sys.modules]}))
 """.replace("HEAVY", ",".join(HEAVY))
 
@@ -143,6 +149,16 @@ for options in routes[: int(sys.argv[1])]:
 """
 
 
+def install_copy(tmp: str) -> str:
+    """``pip install --no-deps --target <tmp>/site`` of this source tree: lagrange as a user's install has it
+    (byte-compiled, with the C interpreter's extension module when a compiler is present); returns the
+    directory. The dependencies are this interpreter's own."""
+    site = os.path.join(tmp, "site")
+    subprocess.run([sys.executable, "-m", "pip", "install", "--quiet", "--no-deps",
+                    "--target", site, str(Path(__file__).resolve().parents[1])], check=True)
+    return site
+
+
 def routes(name: str, quick: bool, taylor_only: bool = False) -> list[tuple[str, str, str]]:
     """``(label, kind, argument)`` of each route run on ``name`` (``taylor_only``: lagrange's taylor route
     against both heyoka modes)."""
@@ -171,7 +187,7 @@ def _child(kind: str, name: str, argument: str, cache: str, preimport: list[str]
         argv = [sys.executable, "-c", _HEYOKA, name, argument, cache]
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
     w0 = time.perf_counter()
-    r = subprocess.run(argv, env=env, capture_output=True, text=True)
+    r = subprocess.run(argv, env=env, capture_output=True, text=True, cwd=os.path.dirname(cache))
     wall = time.perf_counter() - w0
     after = resource.getrusage(resource.RUSAGE_CHILDREN)
     if r.returncode != 0:
@@ -233,6 +249,8 @@ def write(results: dict, quick: bool, repeats: int, flags: str = "") -> str:
 
     import lagrange
 
+    interpreters = {run.get("c_interpreter") for runs in results.values() for label, route in runs.items()
+                    if label.startswith("lagrange") for run in route.get("warm", [])} - {None}
     lines = [
         "# Re-runs in a new process: lagrange vs heyoka.py, cold and warm caches (issue #23 item 4)", "",
         f"`python benchmarks/rerun.py{' --quick' if quick else ''}{flags}`: {platform.machine()}, "
@@ -240,9 +258,12 @@ def write(results: dict, quick: bool, repeats: int, flags: str = "") -> str:
         f"{lagrange.__version__}, sympy "
         f"{sympy.__version__}, numba {numba.__version__}, heyoka.py {heyoka.__version__}. Medians of {repeats} "
         "run(s) per cell, routes interleaved; every run is a fresh interpreter. rtol = atol = 1e-10, 1001 output "
-        "times; final states agree between cold and warm runs bit for bit (checked). lagrange's modules are "
-        "byte-compiled first, as `pip install` does (heyoka's, sympy's, numpy's and scipy's `.pyc` files come "
-        "from their installs).", "",
+        "times; final states agree between cold and warm runs bit for bit (checked). lagrange: "
+        + ("this source tree, byte-compiled first as `pip install` does" if "--from-source" in flags else
+           "installed with `pip install --no-deps --target` into a temporary directory, as a user's install has it "
+           "(byte-compiled)")
+        + f"; its C Taylor interpreter: {', '.join(sorted(interpreters)) or 'not reported'} (heyoka's, sympy's, "
+        "numpy's and scipy's `.pyc` files come from their installs).", "",
         "*cold*: empty model cache (once-per-machine pieces primed: numba's generic loops, the C interpreter; "
         "heyoka: empty on-disk JIT cache). *warm*: a second process on the same cache (lagrange: derived "
         "equations, generated source, Taylor tape and numba bundles loaded; heyoka: its on-disk LLVM cache). "
@@ -295,6 +316,9 @@ def main(argv=None) -> int:
     ap.add_argument("--repeats", type=int, default=3)
     ap.add_argument("--problems", nargs="*", default=None)
     ap.add_argument("--out", default="rerun.md", help="file name under benchmarks/results/")
+    ap.add_argument("--from-source", action="store_true",
+                    help="run lagrange from this source tree (byte-compiled; the C interpreter is then the library "
+                         "built at run time) instead of a copy installed with pip into a temporary directory")
     ap.add_argument("--render", action="store_true",
                     help="write the report again from the runs saved next to it (<out>.json), measuring nothing")
     args = ap.parse_args(argv)
@@ -308,20 +332,27 @@ def main(argv=None) -> int:
     repeats = 1 if args.quick else args.repeats
     problems = args.problems or (("double_pendulum",) if args.quick else PROBLEMS)
     results = {}
-    byte_compile_lagrange()  # as an installed package: every fresh process then loads .pyc files
     with tempfile.TemporaryDirectory() as tmp:
+        if args.from_source:
+            byte_compile_lagrange()  # as an installed package: every fresh process then loads .pyc files
+            site = str(Path(__file__).resolve().parents[1])
+        else:  # the children import lagrange as pip installs it (byte-compiled, the C extension built)
+            site = install_copy(tmp)
+        # (the children run in a scratch directory: `python -c` puts the working directory first on sys.path)
+        os.environ["PYTHONPATH"] = os.pathsep.join(filter(None, (site, os.environ.get("PYTHONPATH"))))
         primed = os.path.join(tmp, "primed")
         env = dict(os.environ, LAGRANGE_CACHE_DIR=primed)
         env.pop("NUMBA_CACHE_DIR", None)
-        subprocess.run([sys.executable, "-c", _PRIME, "1" if args.quick else "3"], env=env, check=True)
+        subprocess.run([sys.executable, "-c", _PRIME, "1" if args.quick else "3"], env=env, check=True, cwd=tmp)
         for entry in Path(primed).iterdir():  # keep only the once-per-machine pieces
             if entry.name.startswith(("derived_", "source_", "code_", "tape_")):
                 entry.unlink()
         for name in problems:
             results[name] = measure(name, args.quick, repeats, primed, args.taylor_only)
     RESULTS.mkdir(exist_ok=True)
-    flags = (f" --taylor-only --repeats {repeats}" if args.taylor_only else "") + (f" --out {args.out}"
-                                                                                  if args.out != "rerun.md" else "")
+    flags = ((f" --taylor-only --repeats {repeats}" if args.taylor_only else "")
+             + (" --from-source" if args.from_source else "")
+             + (f" --out {args.out}" if args.out != "rerun.md" else ""))
     saved.write_text(json.dumps({"results": results, "quick": args.quick, "repeats": repeats, "flags": flags}))
     out.write_text(write(results, args.quick, repeats, flags))
     print(out.read_text())

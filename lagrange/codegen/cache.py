@@ -41,7 +41,6 @@ from __future__ import annotations
 import hashlib
 import hmac
 import os
-import secrets
 import stat
 import tempfile
 import warnings
@@ -136,6 +135,8 @@ def cache_dir() -> Path:
 
 def _create_secret(path: Path) -> None:
     """Write a new random key at ``path`` atomically (mode 0600); a key another process wrote first wins."""
+    import secrets  # (here: once per cache directory; a run that reads the key never needs it)
+
     fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=".secret.", suffix=".tmp")  # mode 0600
     try:
         with os.fdopen(fd, "wb") as fh:
