@@ -217,6 +217,8 @@ def record(cls=None, /, *, init: bool = True, repr: bool = True, eq: bool = True
         inherits = any(hasattr(b, "__dataclass_fields__") for b in klass.__mro__[1:])
         if "__signature__" not in own:
             klass.__signature__ = _Signature()
+        if not own.get("__doc__"):  # (written below from the record's signature: the standard library would
+            klass.__doc__ = "-"    # ask inspect for object's, which parses it from text: 6 ms a class)
         klass = dataclasses.dataclass(klass, init=False, repr=False, eq=False, frozen=frozen and inherits,
                                       slots=slots)
         for f in dataclasses.fields(klass):
