@@ -119,8 +119,10 @@ def _make_init(cls, frozen: bool, slots: bool):
                 value = values[name]
             elif factory is not MISSING:
                 value = factory()
-            elif not init and not slots:
-                continue  # a plain default of a field outside __init__: the class attribute holds it
+            elif not init:
+                if not slots or default is MISSING:
+                    continue  # (a plain default outside __init__: the class attribute holds it, unless slotted)
+                value = default
             elif default is not MISSING:
                 value = default
             else:

@@ -184,6 +184,21 @@ def test_recursive_repr_and_inheritance(twins):
     assert str(inspect.signature(Plain)) == "(x, y)" and Plain(1, 2).a == 3
 
 
+@pytest.mark.parametrize("slots", [False, True])
+def test_a_field_outside_init_without_default_stays_unset(slots):
+    for deco in (record, dataclasses.dataclass):
+        @deco(slots=slots)
+        class Later:
+            a: int
+            b: int = field(init=False)
+            c: int = field(default=4, init=False)
+
+        obj = Later(1)
+        assert obj.a == 1 and obj.c == 4 and not hasattr(obj, "b")
+        obj.b = 2
+        assert obj.b == 2 and str(inspect.signature(Later)).startswith("(a: int)")
+
+
 @pytest.mark.parametrize("options", [{"order": True}, {"unsafe_hash": True}, {"kw_only": True}, {"spam": 1}])
 def test_unsupported_options_are_refused(options):
     with pytest.raises(TypeError, match="@record does not support"):
