@@ -199,18 +199,17 @@ def _setstate(self, state):
         object.__setattr__(self, f.name, value)
 
 
-_UNSUPPORTED = ("order", "unsafe_hash", "kw_only", "weakref_slot")
+#: ``@dataclass`` options ``@record`` accepts only at their defaults
+_FIXED = {"order": False, "unsafe_hash": False, "kw_only": False, "weakref_slot": False, "match_args": True}
 
 
 def record(cls=None, /, *, init: bool = True, repr: bool = True, eq: bool = True, frozen: bool = False,
            slots: bool = False, **unsupported):
     """``@record``, ``@record(frozen=True, ...)``: a dataclass with generic (not compiled) methods; see the
     module docstring for the contract."""
-    bad = sorted(k for k, v in unsupported.items() if k in _UNSUPPORTED + ("match_args",)
-                 and v != (k == "match_args"))
-    unknown = sorted(set(unsupported) - set(_UNSUPPORTED) - {"match_args"})
-    if bad or unknown:
-        raise TypeError(f"@record does not support {', '.join(bad + unknown)} (use @dataclasses.dataclass)")
+    refused = sorted(k for k, v in unsupported.items() if k not in _FIXED or v != _FIXED[k])
+    if refused:
+        raise TypeError(f"@record does not support {', '.join(refused)} (use @dataclasses.dataclass)")
 
     def wrap(klass):
         own = dict(klass.__dict__)

@@ -612,6 +612,9 @@ def _refused_or_missing(kind: str, path: Path | None) -> None:
         _count(kind, "refused")
 
 
+_ARRAY_KINDS = "biufc"  # booleans, integers, floats, complex: no objects, strings or structured records
+
+
 def _pack_arrays(arrays: dict[str, np.ndarray]) -> bytes:
     """``arrays`` as one byte string. Per array: its name (2-byte length, UTF-8), its dtype (1-byte length,
     ``numpy.dtype.str`` such as ``<f8``; numbers and booleans only), its shape (1-byte ndim, 8 bytes per
@@ -628,9 +631,6 @@ def _pack_arrays(arrays: dict[str, np.ndarray]) -> bytes:
         data = array.tobytes(order="C")
         out += len(data).to_bytes(8, "little") + data
     return bytes(out)
-
-
-_ARRAY_KINDS = "biufc"  # booleans, integers, floats, complex: no objects, strings or structured records
 
 
 def _unpack_arrays(payload: bytes) -> dict[str, np.ndarray]:
