@@ -555,3 +555,54 @@ def test_entry_pickling_rebuilds_nodes_unevaluated_and_identical():
         assert back.is_commutative == e.is_commutative
         assert [n.is_commutative for n in sp.preorder_traversal(back)] == [
             n.is_commutative for n in sp.preorder_traversal(e)]
+
+
+def _source_tree(root) -> None:
+    for rel in ("conventions.py", "simplification.py", "symengine_bridge.py", "model/a.py", "derive/b.py",
+                "codegen/c.py", "codegen/sub/d.py", "model/notes.txt"):
+        path = root / rel
+        path.parent.mkdir(parents=True, exist_ok=True)
+        path.write_text(f"# {rel}\nx = 1\n")
+
+
+def test_source_digest_is_remembered_by_file_identity_and_follows_every_edit(cache, tmp_path, monkeypatch):
+    """The digest of the source files is read from its sealed memo while no file changed (same size, inode,
+    modification and change times), and computed again from the bytes after an edit that keeps the size and
+    even restores the modification time; a damaged memo is refused and rewritten; with the cache off no memo
+    is written or read."""
+    root, _ = cache
+    src = tmp_path / "src"
+    _source_tree(src)
+    content = dc._content_digest(str(src), dc._source_files(str(src)))
+    assert dc._source_files(str(src))[-1] == "codegen/sub/d.py" and "model/notes.txt" not in dc._source_files(str(src))
+    assert dc.sources_digest(str(src)) == content
+    (memo,) = root.glob("srcdigest_*.txt")
+
+    def no_read(*args):
+        raise AssertionError("the files were read although none changed")
+
+    with monkeypatch.context() as m:
+        m.setattr(dc, "_content_digest", no_read)
+        assert dc.sources_digest(str(src)) == content  # from the memo
+
+    edited = src / "derive" / "b.py"
+    before = edited.stat()
+    edited.write_text(edited.read_text().replace("x = 1", "x = 2"))  # same size
+    os.utime(edited, ns=(before.st_atime_ns, before.st_mtime_ns))  # and the same modification time
+    new = dc.sources_digest(str(src))
+    assert new != content and new == dc._content_digest(str(src), dc._source_files(str(src)))
+    assert len(list(root.glob("srcdigest_*.txt"))) == 2
+
+    (current,) = set(root.glob("srcdigest_*.txt")) - {memo}
+    current.write_bytes(current.read_bytes().replace(new.encode(), b"0" * 64))  # a forged digest, no new seal
+    monkeypatch.setattr("lagrange.codegen.cache._warned", False)  # (the warning is given once per process)
+    with pytest.warns(lg.errors.CacheIntegrityWarning, match="authentication tag"):
+        assert dc.sources_digest(str(src)) == new  # refused: the bytes are read again, the memo rewritten
+    assert dc.sources_digest(str(src)) == new
+
+    off = tmp_path / "off"
+    _source_tree(off)
+    monkeypatch.setenv(dc.ENV_VAR, "0")
+    before = set(root.iterdir())
+    assert dc.sources_digest(str(off)) == dc._content_digest(str(off), dc._source_files(str(off)))
+    assert set(root.iterdir()) == before

@@ -264,3 +264,28 @@ def test_rotation_sequence_matches_its_matrix_and_the_general_angular_velocity()
     # substitution keeps the sequence (used by lagrange.eliminate)
     body = RigidBody(m, J, orientation=seq).subs({c: 0})
     assert isinstance(body.orientation, RotationSequence) and not body.orientation.matrix.has(c)
+
+
+@pytest.mark.parametrize("com", [(0, 0, "l"), ("l", 0, 0), (0, "l", 0), ("l", "k", "l - k")])
+def test_lazy_rotation_matrix_and_centre_of_mass_by_columns(com):
+    """A body with Euler angles builds R only when asked; its centre of mass, taken from the columns it needs,
+    is the very expression R r̄ gives (the same tree, not only equal values); the Euler matrix is the product
+    R_z(ψ) R_x(θ) R_z(φ); a matrix orientation of the wrong shape is still refused at declaration; and a
+    System declared from it has the symbols of R among its declared symbols without building R."""
+    psi, th, ph, x = coordinates("psi theta phi x")
+    M, l, k, I1, I3 = parameters("M l k I1 I3")
+    r = [sp.sympify(c, locals={"l": l, "k": k}) for c in com]
+    e = EulerAngles(psi, th, ph)
+    assert (e.matrix - rot_z(psi) * rot_x(th) * rot_z(ph)).applyfunc(sp.expand) == sp.zeros(3, 3)
+    assert [e.column(j) for j in range(3)] == [list(e.matrix[:, j]) for j in range(3)]
+    lazy = RigidBody(M, (I1, I1, I3), origin=(x, 0, 0), orientation=e, com=r)
+    com_lazy = lazy.centre_of_mass
+    assert "R" not in vars(lazy)
+    eager = RigidBody(M, (I1, I1, I3), origin=(x, 0, 0), orientation=e, com=r)
+    assert eager.R == e.matrix and "R" in vars(eager)
+    assert eager.centre_of_mass == com_lazy  # through R: structurally the same expressions
+    s = System([psi, th, ph, x], bodies=[lazy], V=M * com_lazy[2])
+    assert "R" not in vars(lazy)
+    assert {M, l, I1, I3} <= s.declared_symbols
+    with pytest.raises(ValueError, match="3x3"):
+        RigidBody(M, (I1, I1, I3), orientation=sp.Matrix([[1, 0], [0, 1]]))

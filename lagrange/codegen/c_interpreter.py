@@ -8,8 +8,8 @@ built at install time, else a library built once per machine into the cache, ver
 2. **Built at run time** (no extension module, e.g. a source checkout): the system's compiler (``$CC``, else
    Python's configured compiler, else ``cc``) builds ``ctaylor_<key>.so`` in
    :func:`~lagrange.codegen.numba_backend.cache_dir` (about 0.3 s, once per machine): compiled to a temporary
-   file, fsynced, sealed with the cache's keyed MAC (:func:`lagrange.codegen.cache.seal`, ``.so.mac``: an
-   HMAC-SHA256 with the per-user secret, so a planted or retagged library is refused too) and moved into place with
+   file, fsynced, sealed with the cache's keyed MAC (:func:`lagrange.codegen.cache.seal`, ``.so.mac``: a
+   keyed BLAKE2b with the per-user secret, so a planted or retagged library is refused too) and moved into place with
    ``os.replace``. Before each load the library is checked against its seal (:func:`_verify`); a truncated or
    bit-flipped library (a crash mid-write, a full disk, an edit) is deleted and rebuilt instead of being
    loaded — loading a truncated library would die with SIGBUS.
@@ -21,13 +21,14 @@ built at install time, else a library built once per machine into the cache, ver
 
 from __future__ import annotations
 
-import hashlib
 import importlib.util
 import os
 import platform
 import shutil
 import sys
 from pathlib import Path
+
+from .digest import hexdigest
 
 __all__ = ["ENV_VAR", "SOURCE", "FLAGS", "EXTENSION", "compiler", "library_path", "library_path_or_reason",
            "extension_path"]
@@ -72,8 +73,8 @@ def library_path(cc: list[str]) -> Path:
     compiler command, the flags and the platform."""
     from .cache import cache_dir
 
-    key = hashlib.sha256(b"\0".join([SOURCE.read_bytes(), " ".join(cc + list(FLAGS)).encode(),
-                                     platform.machine().encode(), sys.platform.encode()])).hexdigest()[:24]
+    key = hexdigest(b"\0".join([SOURCE.read_bytes(), " ".join(cc + list(FLAGS)).encode(),
+                                 platform.machine().encode(), sys.platform.encode()]), size=12)
     return cache_dir() / f"ctaylor_{key}.so"
 
 
@@ -87,7 +88,7 @@ def _seal_path(path: Path) -> Path:
 
 def _seal(path: Path, data: bytes) -> None:
     """Authenticate ``data`` (the bytes about to be moved to ``path``) with the cache's keyed MAC
-    (:func:`lagrange.codegen.cache.seal`: HMAC-SHA256 with the per-user secret, in ``<name>.mac``)."""
+    (:func:`lagrange.codegen.cache.seal`: keyed BLAKE2b with the per-user secret, in ``<name>.mac``)."""
     from .cache import seal
 
     seal(path, data)

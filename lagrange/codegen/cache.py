@@ -12,11 +12,12 @@ source, compiled numba code, the C Taylor library), so the directory and every e
   authenticated, with the key found in that directory.
 * **Every entry is authenticated.** The directory holds a per-user secret (``secret.key``: 32 random
   bytes, created atomically with mode ``0600``; refused when another user owns it or can read it). An entry
-  carries an HMAC-SHA256 of its file name and its bytes under that key: :func:`write_sealed` writes
-  ``tag + data`` in one file, :func:`seal` writes the tag next to a file another tool produced
-  (``<name>.mac``, for the C library). An entry that is planted, copied under another key (retagged), edited,
-  truncated or written by an older lagrange fails :func:`read_verified` / :func:`verify`: it is ignored and
-  rebuilt, never loaded, and one :class:`~lagrange.errors.CacheIntegrityWarning` per process says so.
+  carries a MAC of its file name and its bytes under that key (keyed BLAKE2b,
+  :mod:`lagrange.codegen.digest`): :func:`write_sealed` writes ``tag + data`` in one file, :func:`seal`
+  writes the tag next to a file another tool produced (``<name>.mac``, for the C library). An entry that is
+  planted, copied under another key (retagged), edited, truncated or written by an older lagrange fails
+  :func:`read_verified` / :func:`verify`: it is ignored and rebuilt, never loaded, and one
+  :class:`~lagrange.errors.CacheIntegrityWarning` per process says so.
 * **Writes are atomic and durable**: a temporary file in the same directory (mode ``0600``), ``fsync``, then
   ``os.replace`` (:func:`atomic_write`), so racing writers and readers see a whole entry or none.
 
@@ -38,8 +39,6 @@ b'payload'
 
 from __future__ import annotations
 
-import hashlib
-import hmac
 import os
 import stat
 import tempfile
@@ -47,6 +46,7 @@ import warnings
 from pathlib import Path
 
 from ..errors import CacheError, CacheIntegrityWarning
+from .digest import compare_digest, mac
 
 __all__ = ["DIR_VAR", "TRUST_VAR", "SECRET_NAME", "cache_root", "cache_dir", "trusted", "atomic_write",
            "write_sealed", "read_verified", "seal", "verify", "tag"]
@@ -58,7 +58,7 @@ TRUST_VAR = "LAGRANGE_CACHE_TRUST"
 #: the per-user key's file name inside the cache directory
 SECRET_NAME = "secret.key"
 _SECRET_BYTES = 32
-_MAGIC = b"lagrange-sealed-v1 "
+_MAGIC = b"lagrange-sealed-v2 "
 _SIDECAR = ".mac"
 _warned = False
 
@@ -176,15 +176,15 @@ def _secret(directory: Path) -> bytes:
 
 
 def tag(name: str, data: bytes, *, kind: bytes = b"entry", directory: Path | None = None) -> bytes:
-    """HMAC-SHA256, under the key of ``directory`` (default :func:`cache_dir`), of ``kind``, the entry's
-    file ``name`` (so an entry copied under another key fails) and ``data``; hex digits, as bytes."""
+    """Keyed BLAKE2b (:func:`lagrange.codegen.digest.mac`), under the key of ``directory`` (default
+    :func:`cache_dir`), of ``kind``, the entry's file ``name`` (so an entry copied under another key fails) and
+    ``data``; hex digits, as bytes."""
     if directory is None:
         directory = cache_dir()
     else:
         _refuse(directory, os.stat(directory), "cache directory", 0o022, f"`chmod 700 {directory}` if it is yours")
     key = _secret(directory)
-    return hmac.new(key, b"lagrange cache " + kind + b"\0" + name.encode() + b"\0" + data, hashlib.sha256) \
-        .hexdigest().encode()
+    return mac(key, b"lagrange cache " + kind + b"\0" + name.encode() + b"\0" + data)
 
 
 def atomic_write(path: Path, data: str | bytes) -> None:
@@ -236,7 +236,7 @@ def read_verified(path: Path) -> bytes | None:
     if not (newline and head.startswith(_MAGIC)):
         _reject(path, "it carries no authentication tag")
         return None
-    if not hmac.compare_digest(head[len(_MAGIC):], tag(path.name, data, directory=path.parent)):
+    if not compare_digest(head[len(_MAGIC):], tag(path.name, data, directory=path.parent)):
         _reject(path, "its authentication tag does not match")
         return None
     return data
@@ -272,7 +272,7 @@ def verify(path: Path) -> bool:
         _reject(path, "it carries no authentication tag")
         return False
     if not (mark.startswith(_MAGIC)
-            and hmac.compare_digest(mark[len(_MAGIC):], tag(path.name, data, kind=b"file", directory=path.parent))):
+            and compare_digest(mark[len(_MAGIC):], tag(path.name, data, kind=b"file", directory=path.parent))):
         _reject(path, "its authentication tag does not match")
         return False
     return True

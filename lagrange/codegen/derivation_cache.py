@@ -7,24 +7,24 @@ to the numba bundles:
 
 ``derived_<key>.pkl``
     the pickled :class:`~lagrange.derive.equations.Equations` of a :class:`~lagrange.System`, under
-    :func:`declaration_key`: a SHA-256 over a hash tree of everything the derivation reads from the
+    :func:`declaration_key`: a BLAKE2b over a hash tree of everything the derivation reads from the
     declaration (coordinates with their assumptions, T — or, when it comes wholly from Particles and
     RigidBodies, the fields it is built from (:func:`~lagrange.derive.derivation_choice.kinetic_declaration`),
     so that a re-run never builds it — V, P, the Rayleigh function, the generalized forces, the constraints,
     prescribed motions, declared parameters, name) and of :func:`environment`;
 ``source_<key>.txt``
-    the generated source of one backend, under a SHA-256 of the equations' fingerprint
+    the generated source of one backend, under a BLAKE2b of the equations' fingerprint
     (:func:`equations_fingerprint`), the code generator's options and :func:`environment`. Equations
     derived from a declaration are fingerprinted by their declaration key (the derivation is a function of
     the declaration and the environment, both in the key); equations built any other way by the hash tree
     of their content, so they hit exactly when their content is the same;
 ``code_<key>.pyc``
     the generated python-backend module compiled (:func:`cached_code`: its code object marshalled, as in a
-    ``.pyc``), under a SHA-256 of the source and :func:`environment` (whose Python version is the
+    ``.pyc``), under a BLAKE2b of the source and :func:`environment` (whose Python version is the
     marshal format's);
 ``tape_<key>.arrays``
     the Taylor tape (:class:`~lagrange.codegen.tape.Tape`: the CSE translated into numbered instructions) of
-    a model, under a SHA-256 of the equations' fingerprint and :func:`environment`; plain integer and float
+    a model, under a BLAKE2b of the equations' fingerprint and :func:`environment`; plain integer and float
     arrays, each a name, a numeric dtype, a shape and its bytes (:func:`_pack_arrays`; nothing in it is
     unpickled; not ``.npz``, whose zip reader cost 10–20 ms of a warm re-run's 0.4 s), so a
     re-run of ``method="taylor"`` skips the CSE and the translation (1.1 s of a warm re-run of the 10-link
@@ -36,9 +36,9 @@ test or a benchmark reads to see a re-run load instead of rebuild).
 :func:`environment` names the entry format, the lagrange version *and a hash of the source files of the
 stages that make the entries* (:data:`SOURCES`: an edited checkout never reuses an entry made by other
 code), the sympy, symengine (or its absence) and Python versions and the machine. Each entry starts with
-one header line holding its key, the SHA-256 of its payload and the environment; an entry whose header does
+one header line holding its key, the BLAKE2b of its payload and the environment; an entry whose header does
 not match (damaged, truncated, renamed, or written by other versions) is ignored and rebuilt, so a stale or
-damaged entry never gives a wrong answer. Every entry is sealed with an HMAC under the per-user key of the
+damaged entry never gives a wrong answer. Every entry is sealed with a MAC (keyed BLAKE2b) under the per-user key of the
 cache directory (:func:`~lagrange.codegen.cache.write_sealed`) and authenticated before it is unpickled or
 used (:func:`~lagrange.codegen.cache.read_verified`): a planted entry, a valid entry copied under another
 key, an edited or a damaged one is rebuilt, never loaded. Writes are atomic and fsynced. A
@@ -52,7 +52,6 @@ file to cache the compiled code).
 
 from __future__ import annotations
 
-import hashlib
 import io
 import marshal
 import os
@@ -74,6 +73,7 @@ from sympy.printing.repr import ReprPrinter
 from ..derive.equations import Equations
 from ..errors import CacheError
 from .cache import cache_dir, read_verified, write_sealed
+from .digest import hasher, hexdigest
 
 __all__ = ["ENV_VAR", "MAX_ENTRIES_VAR", "prune",
            "enabled", "environment", "declaration_key", "equations_fingerprint", "cached_equations",
@@ -83,7 +83,7 @@ __all__ = ["ENV_VAR", "MAX_ENTRIES_VAR", "prune",
 ENV_VAR = "LAGRANGE_DERIVATION_CACHE"
 _FORMAT = 1
 #: how declarations and equations are turned into keys (:class:`_KeyHasher`; the srepr text before)
-_KEY_FORMAT = "merkle-sha256 v2 (T by its bodies' fields)"
+_KEY_FORMAT = "merkle-blake2b v3 (T by its bodies' fields)"
 _OFF = ("0", "off", "false", "no")
 #: System attributes that are not in the key, and why (tests check every other attribute is keyed)
 UNKEYED_ATTRIBUTES = {
@@ -125,11 +125,10 @@ def enabled() -> bool:
 SOURCES = ("conventions.py", "simplification.py", "symengine_bridge.py", "model", "derive", "codegen")
 
 
-@lru_cache(maxsize=1)
-def _source_digest() -> str:
-    """SHA-256 of the ``.py`` files (paths and bytes) of :data:`SOURCES`, once per process (``os.walk`` and
-    plain strings: pathlib's ``rglob`` and ``relative_to`` doubled its 3 ms on every run)."""
-    root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+def _source_files(root: str) -> list[str]:
+    """The ``.py`` files of :data:`SOURCES` under ``root`` (paths relative to it, ``/``-separated), in
+    :data:`SOURCES` order (``os.walk`` and plain strings: pathlib's ``rglob`` and ``relative_to`` doubled its
+    cost)."""
     files = []
     for part in SOURCES:
         if part.endswith(".py"):
@@ -139,11 +138,55 @@ def _source_digest() -> str:
             dirs[:] = [d for d in dirs if d != "__pycache__"]
             rel = os.path.relpath(folder, root).replace(os.sep, "/")
             files += [f"{rel}/{name}" for name in names if name.endswith(".py")]
-    h = hashlib.sha256()
-    for rel in sorted(files, key=lambda r: (SOURCES.index(r.split("/")[0]), r)):
+    return sorted(files, key=lambda r: (SOURCES.index(r.split("/")[0]), r))
+
+
+def _content_digest(root: str, files: list[str]) -> str:
+    """BLAKE2b of the paths and bytes of ``files``."""
+    h = hasher()
+    for rel in files:
         with open(os.path.join(root, *rel.split("/")), "rb") as fh:
             h.update(rel.encode() + b"\0" + fh.read() + b"\0")
     return h.hexdigest()
+
+
+@lru_cache(maxsize=1)
+def _source_digest() -> str:
+    """:func:`sources_digest` of lagrange's own package, once per process."""
+    return sources_digest(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+
+
+def sources_digest(root: str) -> str:
+    """BLAKE2b of the ``.py`` files (paths and bytes) of :data:`SOURCES` under ``root``.
+
+    Reading and hashing the 45 files costs about 5 ms of every warm re-run, so the digest is remembered in the
+    cache directory (``srcdigest_<fingerprint>.txt``, sealed like every entry) under a fingerprint of each
+    file's path, size, inode, device and modification and change times in nanoseconds. That is stricter than
+    the check Python's own bytecode cache trusts (modification time in seconds and size): an edit, a
+    ``git checkout`` or a reinstall changes the change time, which no user can set back. With the cache off or
+    unusable, the files are read every time.
+    """
+    files = _source_files(root)
+    memo = None
+    if enabled():
+        try:
+            stats = [root]
+            for rel in files:
+                st = os.stat(os.path.join(root, *rel.split("/")))
+                stats.append(f"{rel} {st.st_size} {st.st_ino} {st.st_dev} {st.st_mtime_ns} {st.st_ctime_ns}")
+            memo = _entry_path("srcdigest", hexdigest("\n".join(stats).encode(), size=16), ".txt")
+            text = read_verified(memo) if memo is not None else None
+        except (OSError, CacheError):  # no usable cache directory: read the files
+            memo, text = None, None
+        if text is not None and len(text) == 64 and all(c in b"0123456789abcdef" for c in text):
+            return text.decode()
+    digest = _content_digest(root, files)
+    if memo is not None:
+        try:
+            write_sealed(memo, digest.encode())
+        except OSError:
+            pass
+    return digest
 
 
 @lru_cache(maxsize=1)
@@ -215,7 +258,7 @@ class _KeyPrinter(ReprPrinter):
 
 
 def _digest(*parts: str) -> str:
-    return hashlib.sha256("\0".join(parts).encode()).hexdigest()[:32]
+    return hexdigest("\0".join(parts).encode(), size=16)
 
 
 def _text(obj) -> str | None:
@@ -228,9 +271,9 @@ def _text(obj) -> str | None:
 
 
 def _h(tag: bytes, *parts: bytes) -> bytes:
-    """SHA-256 of a one-byte ``tag`` and ``parts``, each prefixed with its length (no two different part
+    """BLAKE2b of a one-byte ``tag`` and ``parts``, each prefixed with its length (no two different part
     lists give the same input)."""
-    h = hashlib.sha256(tag)
+    h = hasher(tag)
     for part in parts:
         h.update(len(part).to_bytes(8, "little"))
         h.update(part)
@@ -249,7 +292,7 @@ class _KeyHasher:
     outside sympy and lagrange, and a ``Poly`` (its domain is neither in its arguments nor in its ``srepr``:
     ``Poly(x**2, x)`` and ``Poly(x**2, x, domain="QQ")`` print alike) raise :class:`_Uncacheable`. Every
     digest is tagged with its kind and its parts are length-prefixed, so different content never gives the
-    same input to SHA-256: two declarations sharing a key would need a SHA-256 collision.
+    same input to BLAKE2b: two declarations sharing a key would need a BLAKE2b collision.
 
     A subexpression met again (the same object: ``sin(q1)`` in every term of a pendulum's T) is hashed once
     (memo by ``id``; the memo holds the objects, so an id is never reused while hashing), where the printed
@@ -321,7 +364,7 @@ def _declaration(system) -> tuple:
 
 
 def declaration_key(system) -> str | None:
-    """The key of ``system``'s derivation entry: a SHA-256 over the hash tree (:class:`_KeyHasher`) of its
+    """The key of ``system``'s derivation entry: a BLAKE2b over the hash tree (:class:`_KeyHasher`) of its
     declaration (every attribute the derivation reads) and :func:`environment`; None when the declaration
     cannot be cached.
 
@@ -349,7 +392,7 @@ def _remember(eqs: Equations, fingerprint: str | None) -> str | None:
 
 
 def equations_fingerprint(eqs: Equations) -> str | None:
-    """SHA-256 of the hash tree (:class:`_KeyHasher`) of every field of ``eqs`` (None when it holds an unknown
+    """BLAKE2b of the hash tree (:class:`_KeyHasher`) of every field of ``eqs`` (None when it holds an unknown
     sympy class).
 
     Memoized per object; equations derived or loaded by :func:`cached_equations` come with the fingerprint
@@ -373,7 +416,7 @@ def _entry_path(kind: str, key: str, suffix: str) -> Path | None:
 
 
 def _header(key: str, payload: bytes) -> bytes:
-    return f"lagrange-cache {key} sha256 {hashlib.sha256(payload).hexdigest()} {environment()}".encode()
+    return f"lagrange-cache {key} blake2b {hexdigest(payload)} {environment()}".encode()
 
 
 def _read(path: Path | None, key: str) -> bytes | None:
@@ -407,7 +450,7 @@ MAX_ENTRIES_VAR = "LAGRANGE_DERIVATION_CACHE_MAX"
 
 def prune(directory: Path, max_entries: int | None = None) -> int:
     """Delete the least recently written entries (``derived_*.pkl``, ``source_*.txt``, ``code_*.pyc``,
-    ``tape_*.arrays``, ``*.numba``, ``heyoka_*.pkl``) beyond
+    ``tape_*.arrays``, ``*.numba``, ``heyoka_*.pkl``, ``srcdigest_*.txt``) beyond
     ``max_entries`` (default ``$LAGRANGE_DERIVATION_CACHE_MAX`` or 2000), down to 90 % of it; returns the
     number deleted. Called after every write (a cache miss), so the directory never grows without bound."""
     if max_entries is None:
@@ -416,7 +459,8 @@ def prune(directory: Path, max_entries: int | None = None) -> int:
         except ValueError:
             max_entries = 2000
     entries = []
-    for pattern in ("derived_*.pkl", "source_*.txt", "code_*.pyc", "tape_*.arrays", "*.numba", "heyoka_*.pkl"):
+    for pattern in ("derived_*.pkl", "source_*.txt", "code_*.pyc", "tape_*.arrays", "*.numba", "heyoka_*.pkl",
+                    "srcdigest_*.txt"):
         for path in directory.glob(pattern):
             try:
                 entries.append((path.stat().st_mtime, path))
@@ -529,7 +573,7 @@ def _load_equations(system, key: str, path: Path | None) -> Equations | None:
     if payload is None:
         return None
     try:
-        eqs, fingerprint = pickle.loads(payload)  # noqa: S301 - our own entry, authenticated (HMAC)
+        eqs, fingerprint = pickle.loads(payload)  # noqa: S301 - our own entry, authenticated (keyed MAC)
     except Exception:  # noqa: BLE001 - an entry that does not load is rebuilt
         return None
     if isinstance(eqs, Equations) and isinstance(fingerprint, str) and eqs.coordinates == system.coordinates:
@@ -571,7 +615,7 @@ def _entry(kind: str, key: str, suffix: str, load: Callable[[bytes], object], bu
     return value
 
 
-#: compiled code by the SHA-256 of its source, in this process (bounded): a re-run in the same process neither
+#: compiled code by the BLAKE2b of its source, in this process (bounded): a re-run in the same process neither
 #: reads the entry again nor unmarshals it
 _CODE: dict[str, CodeType] = {}
 _CODE_MEMO = 64
@@ -579,13 +623,13 @@ _CODE_MEMO = 64
 
 def cached_code(source: str, filename: str) -> CodeType:
     """``compile(source, filename, "exec")``, loaded from the cache when an intact entry exists (``code_<key>.pyc``:
-    the code object marshalled, as in a ``.pyc`` file, under a SHA-256 of the source, ``filename`` and
+    the code object marshalled, as in a ``.pyc`` file, under a BLAKE2b of the source, ``filename`` and
     :func:`environment`, which names the Python version that wrote it), else compiled and stored.
 
     The python backend's generated module of a 10-link pendulum takes 25–35 ms to compile and 1 ms to unmarshal.
-    A marshalled entry is trusted as a pickle is: only after its seal (HMAC) and header are verified.
+    A marshalled entry is trusted as a pickle is: only after its seal (keyed MAC) and header are verified.
     """
-    digest = hashlib.sha256(source.encode("utf-8")).hexdigest()
+    digest = hexdigest(source.encode("utf-8"))
     code = _CODE.get(digest)
     if code is not None:
         return code

@@ -5,7 +5,7 @@ for a 5-link chain (compact mode), the whole first-result time of a small run. A
 with its compiled object code, and un-pickling skips the compile (measured in
 ``benchmarks/results/heyoka_backend.md``). So :func:`integrator` stores each integrator it builds in the
 project's cache directory (:func:`lagrange.codegen.cache.cache_dir`), as ``heyoka_<key>.pkl``, sealed with the
-per-user HMAC key (:func:`~lagrange.codegen.cache.write_sealed`), and a later process loads it instead of
+per-user MAC key (:func:`~lagrange.codegen.cache.write_sealed`), and a later process loads it instead of
 compiling, **after** the entry authenticated (:func:`~lagrange.codegen.cache.read_verified`): a planted, edited,
 damaged or renamed entry is never unpickled — it is rebuilt (one
 :class:`~lagrange.errors.CacheIntegrityWarning` per process), and a cache directory others can write is refused
@@ -84,14 +84,14 @@ def _entry(key: str) -> Path | None:
 
 def _load(path: Path, key: str, hy, shape, n_events: int, batch: int):
     """The integrator stored at ``path`` after it authenticated, or None."""
-    data = read_verified(path)  # None unless the HMAC matched: nothing else is unpickled
+    data = read_verified(path)  # None unless the MAC matched: nothing else is unpickled
     if data is None:
         return None
     head, newline, payload = data.partition(b"\n")
     if not newline or head != HEADER + b" " + key.encode():
         return None
     try:
-        ta = pickle.loads(payload)  # noqa: S301 - our own entry, authenticated (HMAC) above
+        ta = pickle.loads(payload)  # noqa: S301 - our own entry, authenticated (keyed MAC) above
     except Exception:  # noqa: BLE001 - an entry that does not load is rebuilt
         return None
     kind, dims = ("taylor_adaptive_batch_dbl", (shape.nz, batch)) if batch else ("taylor_adaptive_dbl", (shape.nz,))

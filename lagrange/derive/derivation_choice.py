@@ -13,7 +13,7 @@ from sympy.core.function import AppliedUndef
 from ..conventions import t
 from ..model.bodies import Particle
 from ..model.rigid_body import RigidBody
-from ..model.rotations import EulerAngles, Quaternion, RotationSequence
+from ..model.rotations import EulerAngles, Quaternion, RotationSequence, defining_expressions
 
 __all__ = ["DERIVATIONS", "AUTO_MIN_COORDINATES", "structural_refusal", "auto_structural", "kinetic_declaration"]
 
@@ -45,10 +45,12 @@ def structural_refusal(T_given, bodies) -> str | None:
 
 
 def _kinematic_expressions(b) -> list:
-    """Everything a body's kinetic energy is built from (for validation and the refusal checks)."""
+    """Everything a body's kinetic energy is built from (for validation and the refusal checks): for a rigid
+    body the expressions its orientation is defined by (:func:`~lagrange.model.rotations.defining_expressions`),
+    not its rotation matrix, which holds the same symbols and is built only when used."""
     if isinstance(b, Particle):
         return [b.mass, *b.position]
-    return [b.mass, *b.inertia, *b.origin, *b.com, *b.R]
+    return [b.mass, *b.inertia, *b.origin, *b.com, *defining_expressions(b.orientation)]
 
 
 def kinetic_declaration(bodies) -> tuple | None:

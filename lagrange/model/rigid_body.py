@@ -76,9 +76,16 @@ class RigidBody:
         self.inertia = _tensor(inertia)
         self.origin = as_vector(origin, f"origin of rigid body {name!r}")
         self.orientation = orientation if orientation is not None else sp.eye(3)
-        self.R = as_rotation(self.orientation)
+        if not isinstance(self.orientation, (EulerAngles, Quaternion, RotationSequence)):
+            self.R = as_rotation(self.orientation)  # (checked now: a matrix of the wrong shape is refused here)
         self.com = as_vector(com, f"centre of mass of rigid body {name!r}")
         self.name = name
+
+    @cached_property
+    def R(self) -> sp.Matrix:
+        """The rotation matrix: columns are the body axes in inertial components (built on first use for
+        Euler angles, quaternions and rotation sequences; a warm re-run of a top never needs it whole)."""
+        return as_rotation(self.orientation)
 
     # --- kinematics (computed once: the body never changes) --------------------------------------
     @cached_property
@@ -115,6 +122,10 @@ class RigidBody:
     @property
     def centre_of_mass(self) -> sp.Matrix:
         """Inertial position of the centre of mass."""
+        if "R" not in self.__dict__ and type(self.orientation) is EulerAngles:  # the columns it needs
+            columns = {j: self.orientation.column(j) for j in range(3) if self.com[j] != 0}
+            return self.origin + sp.Matrix([sp.Add(*[columns[j][i] * self.com[j] for j in columns])
+                                            for i in range(3)])
         return self.origin + _rotate(self.R, self.com)
 
     # --- energy ---------------------------------------------------------------------------------

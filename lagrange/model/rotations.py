@@ -38,6 +38,7 @@ __all__ = [
     "Quaternion",
     "RotationSequence",
     "as_rotation",
+    "defining_expressions",
     "body_angular_velocity",
     "space_angular_velocity",
 ]
@@ -82,12 +83,20 @@ class EulerAngles:
     def matrix(self) -> sp.Matrix:
         """``R_z(ψ) R_x(θ) R_z(φ)`` multiplied out (Wells Table 8.2; the same expressions as the product, built
         without its zeros and ones: a quarter of its cost)."""
+        columns = [self.column(j) for j in range(3)]
+        return sp.Matrix(3, 3, lambda i, j: columns[j][i])
+
+    def column(self, j: int) -> list:
+        """Column ``j`` of :attr:`matrix` (body axis x, y or z in inertial components), without building the
+        other two: the body z axis needs neither sin φ nor cos φ (a top's centre of mass)."""
         c1, s1 = sp.cos(self.psi), sp.sin(self.psi)
         c2, s2 = sp.cos(self.theta), sp.sin(self.theta)
+        if j == 2:
+            return [s1 * s2, -c1 * s2, c2]
         c3, s3 = sp.cos(self.phi), sp.sin(self.phi)
-        return sp.Matrix([[c1 * c3 - s1 * c2 * s3, -c1 * s3 - s1 * c2 * c3, s1 * s2],
-                          [s1 * c3 + c1 * c2 * s3, -s1 * s3 + c1 * c2 * c3, -c1 * s2],
-                          [s2 * s3, s2 * c3, c2]])
+        if j == 0:
+            return [c1 * c3 - s1 * c2 * s3, s1 * c3 + c1 * c2 * s3, s2 * s3]
+        return [-c1 * s3 - s1 * c2 * c3, -s1 * s3 + c1 * c2 * c3, s2 * c3]
 
     def body_angular_velocity(self) -> sp.Matrix:
         """Wells (8.11), in closed form."""
@@ -212,6 +221,20 @@ class RotationSequence:
 
     def __repr__(self) -> str:
         return "RotationSequence(" + ", ".join(f"({a!r}, {th})" for a, th in self.rotations) + ")"
+
+
+def defining_expressions(orientation) -> list:
+    """What an orientation is built from: the three Euler angles, the angles of a rotation sequence, the four
+    quaternion components, or the nine entries of a matrix. Its rotation matrix and angular velocity hold the
+    same coordinates, functions, derivatives and integrals, so declarations are checked on these. (A subclass
+    may build its matrix otherwise: its matrix is what it is defined by.)"""
+    if type(orientation) is EulerAngles:
+        return [orientation.psi, orientation.theta, orientation.phi]
+    if type(orientation) is RotationSequence:
+        return [angle for _, angle in orientation.rotations]
+    if type(orientation) is Quaternion:
+        return list(orientation.components)
+    return list(as_rotation(orientation))
 
 
 def as_rotation(orientation) -> sp.Matrix:

@@ -541,7 +541,13 @@ class System:
         exprs = [T, self.V, self.P, self.rayleigh, *self.forces.values(), *self.prescribed.values()]
         for c in self.constraints:
             exprs.append(c.velocity)
+        from .rigid_body import RigidBody
+        from .rotations import defining_expressions
+
         for b in self.bodies:
+            if isinstance(b, RigidBody):  # its positions and R hold the symbols of these (R is built on use)
+                exprs += [b.mass, b.inertia, b.com, b.origin, *defining_expressions(b.orientation)]
+                continue
             exprs += list(b.position_vectors())
             exprs += [getattr(b, a) for a in ("mass", "inertia", "com", "R", "origin") if hasattr(b, a)]
         out = set().union(*(_sympify(e).free_symbols for e in exprs))
