@@ -3,9 +3,10 @@
 BLAKE2b (RFC 7693) is both: a cryptographic hash, and, with a secret key, a MAC (its keyed mode is the
 construction its designers give as a replacement for HMAC). It is taken from CPython's built-in ``_blake2``
 module, the very implementation ``hashlib.blake2b`` hands out: importing :mod:`hashlib` (or :mod:`hmac`,
-or :mod:`secrets`) loads OpenSSL's libcrypto, about 12 million instructions (5 ms) on every warm re-run of a
-model, whose own work is about 100 ms. When ``_blake2`` is absent (another Python implementation), the
-public :mod:`hashlib` and :mod:`hmac` are used: the same digests, only the import costs more.
+or :mod:`secrets`) loads OpenSSL's libcrypto, about 7 million instructions on every warm re-run of a model
+(``perf stat``; lagrange's own work on a re-run of a top is about 130 million). When ``_blake2`` is absent
+(another Python implementation), the public :mod:`hashlib` and :mod:`hmac` are used: the same digests, only
+the import costs more.
 
 >>> hexdigest(b"abc", size=8)
 'd8bb14d833d59559'

@@ -542,11 +542,10 @@ class System:
         for c in self.constraints:
             exprs.append(c.velocity)
         from .rigid_body import RigidBody
-        from .rotations import defining_expressions
 
         for b in self.bodies:
-            if isinstance(b, RigidBody):  # its positions and R hold the symbols of these (R is built on use)
-                exprs += [b.mass, b.inertia, b.com, b.origin, *defining_expressions(b.orientation)]
+            if isinstance(b, RigidBody):  # its positions and R hold the symbols of its kinematics (R built on use)
+                exprs += _kinematics_of(b)
                 continue
             exprs += list(b.position_vectors())
             exprs += [getattr(b, a) for a in ("mass", "inertia", "com", "R", "origin") if hasattr(b, a)]
