@@ -330,6 +330,12 @@ def test_refusals_name_the_problem():
         on_line(other.point((0, 0)), direction=(0, 0))
     with pytest.raises(DeclarationError, match="angle .* must be one expression"):
         PlanarBody(1, 1, angle=(a, b))
+    with pytest.raises(DeclarationError, match="is not finite"):
+        body.point((float("nan"), 0))
+    with pytest.raises(DeclarationError, match="inertia of planar body = None is not an expression"):
+        PlanarBody(1, None)
+    with pytest.raises(DeclarationError, match="stiffness = nan is not finite"):
+        spring_potential(body.point("P"), (0, 0), float("nan"))
     # a joint whose points can never meet is a constraint without coordinates: System refuses it
     fixed1, fixed2 = PlanarBody(1, 1, (0, 0), name="f1"), PlanarBody(1, 1, (1, 0), name="f2")
     with pytest.raises(DeclarationError, match="involves no coordinate"):

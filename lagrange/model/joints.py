@@ -34,7 +34,7 @@ from ..simplification import is_zero
 from .bodies import MaterialPoint, Particle
 from .constraints import Holonomic
 from .coordinates import normalize_time, time_derivative
-from .planar import PlanarBody
+from .planar import PlanarBody, _finite
 
 __all__ = ["revolute", "slider", "pin", "on_line", "spherical", "spring_potential", "damper_power"]
 
@@ -79,7 +79,7 @@ def _position(p, what: str, problems: list) -> sp.Matrix | None:
         return p.position
     if isinstance(p, (sp.MatrixBase, list, tuple)) and 1 <= len(p) <= 3:
         try:
-            comps = [normalize_time(_sympify(c)) for c in p]
+            comps = [_finite(normalize_time(_sympify(c)), what, problems) for c in p]
         except (sp.SympifyError, TypeError, SyntaxError):
             problems.append(f"{what} = {p!r} is not a position (1 to 3 expressions)")
             return None
@@ -227,24 +227,34 @@ def slider(guide, follower: MaterialPoint, axis=(1, 0), angle=0, name: str = "")
         if base is not None and base[2] != 0:
             problems.append(f"the guide position {tuple(base)} leaves the plane")
     u = _unit(axis, "axis", problems)
-    rel = _sympify(angle) if not isinstance(angle, (list, tuple, sp.MatrixBase)) else None
-    if rel is None:
+    if isinstance(angle, (list, tuple, sp.MatrixBase)):
         problems.append(f"angle must be one expression, got {angle!r}")
     _raise(problems, joint)
+    rel = _coefficient(angle, "angle", joint)
     ex = u[0] * sp.cos(theta_g) - u[1] * sp.sin(theta_g)
     ey = u[0] * sp.sin(theta_g) + u[1] * sp.cos(theta_g)
     d = f.position - base
     name = name or f"slider {_label(guide) if isinstance(guide, MaterialPoint) else 'ground'}-{_label(f)}"
-    return _closures([("line", ex * d[1] - ey * d[0]), ("angle", f.body.angle - theta_g - normalize_time(rel))],
+    return _closures([("line", ex * d[1] - ey * d[0]), ("angle", f.body.angle - theta_g - rel)],
                      name)
 
 
 def _separation(p, q, what: str) -> sp.Matrix:
     problems: list[str] = []
-    a = _position(p, f"{what}: first point", problems)
-    b = _position(q, f"{what}: second point", problems)
+    a = _position(p, "first point", problems)
+    b = _position(q, "second point", problems)
     _raise(problems, what)
     return a - b
+
+
+def _coefficient(value, what: str, subject: str):
+    problems: list[str] = []
+    try:
+        e = _finite(normalize_time(_sympify(value)), what, problems)
+    except (sp.SympifyError, TypeError, SyntaxError):
+        problems.append(f"{what} = {value!r} is not an expression")
+    _raise(problems, subject)
+    return e
 
 
 def spring_potential(p, q, k, rest_length=0) -> sp.Expr:
@@ -258,7 +268,7 @@ def spring_potential(p, q, k, rest_length=0) -> sp.Expr:
     3*x(t)**2/2
     """
     d = _separation(p, q, "spring")
-    k, l0 = normalize_time(_sympify(k)), normalize_time(_sympify(rest_length))
+    k, l0 = _coefficient(k, "stiffness", "spring"), _coefficient(rest_length, "rest length", "spring")
     sq = (d.T * d)[0, 0]
     if l0 == 0:
         return sp.Rational(1, 2) * k * sq
@@ -281,11 +291,11 @@ def damper_power(p, q, c) -> sp.Expr:
         elif isinstance(x, Particle):
             vel.append(x.velocity)
         else:
-            pos = _position(x, f"{what}: {which} point", problems)
+            pos = _position(x, f"{which} point", problems)
             vel.append(time_derivative(pos) if pos is not None else None)
     _raise(problems, what)
     d = _separation(p, q, what)
     dd = vel[0] - vel[1]
-    c = normalize_time(_sympify(c))
+    c = _coefficient(c, "damping coefficient", "damper")
     return -c * (d.T * dd)[0, 0] ** 2 / (2 * (d.T * d)[0, 0])
 

@@ -46,10 +46,21 @@ def _scalar(value, what: str, problems: list):
         problems.append(f"{what} must be one expression, got {value!r}")
         return sp.S.Zero
     try:
-        return normalize_time(_sympify(value))
+        return _finite(normalize_time(_sympify(value)), what, problems)
     except (sp.SympifyError, TypeError, SyntaxError):
         problems.append(f"{what} = {value!r} is not an expression")
         return sp.S.Zero
+
+
+def _finite(e, what: str, problems: list):
+    """``e`` when it is an expression free of nan and infinities, else a problem (and 0)."""
+    if not isinstance(e, sp.Expr):
+        problems.append(f"{what} = {e!r} is not an expression")
+        return sp.S.Zero
+    if e.has(sp.nan, sp.zoo, sp.oo, -sp.oo):
+        problems.append(f"{what} = {e} is not finite")
+        return sp.S.Zero
+    return e
 
 
 def _plane_pair(value, what: str, problems: list) -> tuple:
@@ -67,7 +78,7 @@ def _plane_pair(value, what: str, problems: list) -> tuple:
     out = []
     for c in comps:
         try:
-            out.append(normalize_time(_sympify(c)))
+            out.append(_finite(normalize_time(_sympify(c)), what, problems))
         except (sp.SympifyError, TypeError, SyntaxError):
             problems.append(f"{what}: {c!r} is not an expression")
             out.append(sp.S.Zero)
