@@ -166,6 +166,18 @@ def test_position_hinged_to_another_body_is_a_tree_joint():
     assert revolute(upper.point("end"), lower.point((0, 0))) == ()
 
 
+def test_eliminate_keeps_a_planar_body():
+    """A rod with its own (x, y, θ) pinned at one end, the pin eliminated: the compound pendulum."""
+    x, y, th = coordinates("x y th")
+    m, l, g = parameters("m l g")
+    rod = PlanarBody(m, m * l**2 / 12, (x, y), th, points={"O": (-l / 2, 0)}, name="rod")
+    s = System([x, y, th], bodies=[rod], V=m * g * y, constraints=[pin(rod.point("O"))])
+    reduced = lg.eliminate(s, [x, y])
+    assert isinstance(reduced.bodies[0], PlanarBody)
+    assert sp.simplify(reduced.mass_matrix[0, 0] - m * l**2 / 3) == 0
+    assert sp.simplify(reduced.forcing[0] + m * g * l * sp.cos(th) / 2) == 0
+
+
 # --- four-bar linkage in absolute coordinates -------------------------------------------------------------
 def _parallelogram():
     """A parallelogram four-bar hanging under gravity: two uniform cranks (m, length L) pivoted at (0, 0) and
