@@ -220,18 +220,26 @@ def test_four_bar_frequency_and_closure():
 
 # --- slider-crank against its closed-form kinematics ------------------------------------------------------
 def test_slider_crank_kinematics():
-    phi, x2, y2, t2, x3 = coordinates("phi x2 y2 t2 x3")
+    """Every body has its own (x, y, θ) but the crank (hinged at the origin); the piston slides on the ground's
+    x axis (slider: on the line and not turning)."""
+    phi, x2, y2, t2, x3, y3, t3 = coordinates("phi x2 y2 t2 x3 y3 t3")
     r, l, m, I = parameters("r l m I")
     crank = PlanarBody(m, I, angle=phi, points={"P": (r, 0)}, name="crank")  # hinged at the fixed origin
     rod = PlanarBody(m, m * l**2 / 12, (x2, y2), t2, points={"A": (-l / 2, 0), "B": (l / 2, 0)}, name="rod")
-    piston = PlanarBody(m, I, (x3, 0), 0, name="piston")  # y = 0, angle 0: given, so the slider leaves nothing
-    assert slider((0, 0), piston.point((0, 0))) == ()
-    s = System([phi, x2, y2, t2, x3], bodies=[crank, rod, piston],
-               constraints=[revolute(crank.point("P"), rod.point("A")), revolute(rod.point("B"), piston.point((0, 0)))])
+    piston = PlanarBody(m, I, (x3, y3), t3, name="piston")
+    guide = slider((0, 0), piston.point((0, 0)), axis=(1, 0))
+    assert [c.expr for c in guide] == [y3, t3]
+    # given y = 0 and angle 0 in the kinematics instead, the slider has nothing left to say
+    assert slider((0, 0), PlanarBody(m, I, (x3, 0), 0).point((0, 0))) == ()
+    s = System([phi, x2, y2, t2, x3, y3, t3], bodies=[crank, rod, piston],
+               constraints=[revolute(crank.point("P"), rod.point("A")), revolute(rod.point("B"), piston.point((0, 0))),
+                            guide])
+    assert s.dof.configuration == 1
     vals = {"r": 0.3, "l": 1.0, "m": 1.0, "I": 0.2}
     R, Lr, w = vals["r"], vals["l"], 5.0
-    start = {"phi": 0.0, "x2": R + Lr / 2, "y2": 0.0, "t2": 0.0, "x3": R + Lr,
-             "phi_dot": w, "x2_dot": 0.0, "y2_dot": R * w / 2, "t2_dot": -R * w / Lr, "x3_dot": 0.0}
+    start = {"phi": 0.0, "x2": R + Lr / 2, "y2": 0.0, "t2": 0.0, "x3": R + Lr, "y3": 0.0, "t3": 0.0,
+             "phi_dot": w, "x2_dot": 0.0, "y2_dot": R * w / 2, "t2_dot": -R * w / Lr, "x3_dot": 0.0,
+             "y3_dot": 0.0, "t3_dot": 0.0}
     tr = s.simulate((0, 3.0), start, vals, rtol=1e-10, atol=1e-10)
     ph, piston_x = tr["phi"], tr["x3"]
     closed = R * np.cos(ph) + np.sqrt(Lr**2 - (R * np.sin(ph)) ** 2)
@@ -308,6 +316,8 @@ def test_spatial_pin_and_spherical():
     other = RigidBody(m, (1, 1, 1), origin=(x, 0, 1), name="other")
     ball = spherical(rod.point((l / 2, 0, 0)), other.point((0, 0, 0)))
     assert [c.name.rsplit(" ", 1)[1] for c in ball] == ["(x)", "(y)", "(z)"]
+    expected = [l / 2 * sp.cos(th), y + l / 2 * sp.sin(th), -1]  # rod tip minus the other body's origin
+    assert all(sp.simplify(c.expr - e) == 0 for c, e in zip(ball, expected))
 
 
 # --- Gauss' check -----------------------------------------------------------------------------------------

@@ -145,3 +145,59 @@ def test_planar_spec_refusals(tmp_path, edit, message):
     spec.write_text(text)
     with pytest.raises(SpecError, match=message):
         load_spec(str(spec))
+
+
+JOINTS = """
+coordinates = ["x1", "y1", "a1", "x2", "y2", "a2"]
+parameters = ["l"]
+
+[[planar_bodies]]
+name = "arm"
+mass = "1"
+inertia = "1"
+position = ["x1", "y1"]
+angle = "a1"
+points = { O = ["-l/2", "0"] }
+
+[[planar_bodies]]
+name = "block"
+mass = "1"
+inertia = "1"
+position = ["x2", "y2"]
+angle = "a2"
+points = { C = ["0", "0"] }
+
+[[joints]]
+type = "pin"
+point = "arm.O"
+at = ["0", "1"]
+
+[[joints]]
+type = "slider"
+guide = "arm.O"
+follower = "block.C"
+axis = ["1", "0"]
+angle = "pi/2"
+
+[[joints]]
+type = "on_line"
+point = "block.C"
+through = ["0", "0"]
+direction = ["0", "1"]
+"""
+
+
+def test_pin_slider_and_on_line_tables(tmp_path):
+    spec = tmp_path / "joints.toml"
+    spec.write_text(JOINTS)
+    system = load_spec(str(spec)).system
+    x1, y1, a1, x2, y2, a2 = system.coordinates
+    (l,) = [s for s in system.declared_symbols if s.name == "l"]
+    ox, oy = x1 - l / 2 * sp.cos(a1), y1 - l / 2 * sp.sin(a1)
+    expected = [ox, oy - 1,                                                  # pin at (0, 1)
+                sp.cos(a1) * (y2 - oy) - sp.sin(a1) * (x2 - ox), a2 - a1 - sp.pi / 2,   # slider along the arm
+                -x2]                                                         # on the y axis
+    assert [c.name for c in system.constraints][:2] == ["pin arm.O (x)", "pin arm.O (y)"]
+    got = [c.position for c in system.constraints]
+    assert len(got) == len(expected)
+    assert all(sp.simplify(g - e) == 0 for g, e in zip(got, expected))
