@@ -22,6 +22,9 @@ A component that vanishes identically — already implied by the bodies' positio
 through ``PlanarBody(position=other.point("P"))`` — is left out (proved zero by
 :func:`lagrange.simplification.is_zero`); what remains are the closures. Springs and dampers between points
 (:func:`spring_potential`, :func:`damper_power`) give the V and P terms Wells writes for them.
+
+References: E. J. Haug, *Computer-Aided Kinematics and Dynamics of Mechanical Systems* (1989), ch. 3 (the
+planar joints as constraints in body coordinates); Wells, *Lagrangian Dynamics*, ch. 12 (multipliers).
 """
 
 from __future__ import annotations
@@ -149,7 +152,14 @@ def pin(p, at=(0, 0), name: str = "") -> tuple[Holonomic, ...]:
     r"""A point fixed to the ground: :math:`\mathbf r_p - \mathbf r_{at} = 0`, x and y for a planar body's
     point (``at`` has 2 components), x, y and z for a spatial body's point or a particle.
 
-    ``at`` may depend on t (a point moved along a prescribed path)."""
+    ``at`` may depend on t (a point moved along a prescribed path).
+
+    >>> from lagrange import PlanarBody, coordinates, pin
+    >>> x, y, th = coordinates("x y th")
+    >>> rod = PlanarBody(1, 1, (x, y), th, points={"O": (-1, 0)}, name="rod")
+    >>> [c.expr for c in pin(rod.point("O"), (0, 2))]
+    [x(t) - cos(th(t)), y(t) - sin(th(t)) - 2]
+    """
     problems: list[str] = []
     joint = f"pin {name!r}" if name else "pin"
     if not isinstance(p, (MaterialPoint, Particle)):
