@@ -12,6 +12,7 @@ from sympy.core.function import AppliedUndef
 
 from ..conventions import t
 from ..model.bodies import Particle
+from ..model.planar import PlanarBody
 from ..model.rigid_body import RigidBody
 from ..model.rotations import EulerAngles, Quaternion, RotationSequence, defining_expressions
 
@@ -29,7 +30,7 @@ def structural_refusal(T_given, bodies) -> str | None:
     if not bodies:
         return "there are no bodies"
     for b in bodies:
-        if type(b) not in (Particle, RigidBody):
+        if type(b) not in (Particle, RigidBody, PlanarBody):  # (a PlanarBody is a RigidBody with rot_z)
             return f"body {b!r} is neither a Particle nor a RigidBody"
         if isinstance(b, RigidBody) and isinstance(b.orientation, Quaternion):
             return (f"rigid body {b.name or b!r} has a Quaternion orientation, whose ω = 2Eq̇ is the body's angular "

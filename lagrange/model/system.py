@@ -103,7 +103,8 @@ class System:
         and non-holonomic ones (linear in the velocities, :class:`~lagrange.Nonholonomic` or Wells'
         differential form :class:`~lagrange.Differential`). All coordinates are kept and multipliers
         λ are added (Wells ch. 12); see :mod:`lagrange.model.constraints` for the sign convention and
-        :func:`lagrange.eliminate` to remove superfluous coordinates instead.
+        :func:`lagrange.eliminate` to remove superfluous coordinates instead. A tuple in the sequence (the
+        constraints of a joint, :mod:`lagrange.model.joints`) counts as its members.
     derivation : {"auto", "expanded", "structural"}, optional
         How the equations are derived. ``"expanded"``: from the expanded T, differentiated twice
         (:func:`lagrange.derive.lagrange.lagrange_equations`). ``"structural"``: from each body's kinematics,
@@ -168,6 +169,7 @@ class System:
         if derivation not in DERIVATIONS:
             raise DeclarationError(f"derivation={derivation!r} is not one of {', '.join(map(repr, DERIVATIONS))}")
         problems: list[str] = []
+        constraints = _flatten(constraints)  # a joint (lagrange.model.joints) is a tuple of constraints
         # sympy.physics.mechanics dynamicsymbols (functions of Symbol('t')) are accepted: their time becomes t
         coordinates, T, V, P, rayleigh, forces, prescribed, constraints = (
             normalize_time(x) for x in (coordinates, T, V, P, rayleigh, forces, prescribed, constraints))
@@ -668,6 +670,19 @@ class System:
         from ..printing import latex_equations
 
         return latex_equations(self)
+
+
+def _flatten(constraints) -> list:
+    """``constraints`` with each tuple or list in it (a joint's constraints) spliced in place."""
+    if not isinstance(constraints, (tuple, list)):
+        return constraints
+    out = []
+    for c in constraints:
+        if isinstance(c, (tuple, list)):
+            out.extend(c)
+        else:
+            out.append(c)
+    return out
 
 
 def _kinematics_of(b) -> list:

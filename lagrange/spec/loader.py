@@ -44,6 +44,9 @@ expressions (``"pi/4"``) for declared names only; ``[simulate]`` takes ``t_end``
 :func:`~lagrange.integrate.run.simulate`. Any violation is a :class:`~lagrange.errors.SpecError` naming the
 file and the key.
 
+A planar mechanism is declared by tables of bodies and joints, ``[[planar_bodies]]``, ``[[joints]]``,
+``[[springs]]``, ``[[torques]]`` and ``[[point_forces]]`` (:mod:`lagrange.spec.planar`).
+
 A Python spec is a file that defines ``system`` (a :class:`~lagrange.System`) and optionally
 ``params``, ``initial``, ``inputs`` (any value form of ``simulate``)
 and ``t_end`` — or ``PROBLEM``. **It is executed as Python code**: load only
@@ -69,11 +72,12 @@ from ..model.inputs import inputs as make_inputs
 from ..model.system import System
 from ..records import record
 from .expressions import MAX_TERMS, parse_expression
+from .planar import PLANAR_KEYS, planar_declaration
 
 __all__ = ["LoadedSpec", "load_spec", "load_toml"]
 
 _TOML_KEYS = {"name", "description", "coordinates", "parameters", "T", "V", "P", "rayleigh", "forces",
-              "particles", "params", "initial", "simulate", "inputs", "inputs_values"}
+              "particles", "params", "initial", "simulate", "inputs", "inputs_values"} | PLANAR_KEYS
 _PARTICLE_KEYS = {"mass", "position", "name"}
 #: ``[simulate]`` keys: ``t_end`` and the keyword options of :func:`lagrange.integrate.run.simulate` that are data
 _SIMULATE_KEYS = {"t_end", "method", "rtol", "atol", "n_points", "max_step", "backend", "friction",
@@ -261,9 +265,15 @@ def load_toml(path: Path) -> LoadedSpec:
                             f"({', '.join(coord_names)})")
         forces = {k: expr(f"forces.{k}", v) for k, v in table.items()}
     kwargs = {key: expr(key, data[key]) for key in ("T", "V", "P", "rayleigh") if key in data}
+    planar, joints, V_springs, loads = planar_declaration(data, expr, path)  # (all empty without those tables)
+    if V_springs != 0:
+        kwargs["V"] = kwargs.get("V", 0) + V_springs
+    if loads:
+        forces = ([forces] if forces else []) + loads
     try:
-        system = System(list(coords), bodies=particles, forces=forces, name=data.get("name", path.stem),
-                        parameters=list(params), description=data.get("description", ""), **kwargs)
+        system = System(list(coords), bodies=particles + planar, forces=forces, name=data.get("name", path.stem),
+                        parameters=list(params), description=data.get("description", ""), constraints=joints,
+                        **kwargs)
     except LagrangeError as exc:
         raise SpecError(f"{path}: {exc}") from None
     state_names = {**{nm: None for nm in coord_names}, **{nm + VELOCITY_SUFFIX: None for nm in coord_names}}
