@@ -142,3 +142,21 @@ def test_collapse_at_a_regular_configuration_is_not_a_singular_mass_matrix():
     log.fault(0.0, far)
     err = _trial_fault_error(model, log)
     assert type(err) is IntegrationError and "is regular" in str(err) and "ill-conditioned" in str(err)
+
+
+@pytest.mark.slow
+def test_compiled_loop_rejects_a_failed_solve_and_names_it_where_the_step_collapses():
+    """The compiled DOP853 loop (numba) treats a trial stage whose solve fails as a rejected step: with inertia
+    1 − t it runs up to t = 1 (to round-off, where it stopped at the first trial step past 1 before) and ends
+    with the failed solve as the cause, its partial trajectory exact."""
+    pytest.importorskip("numba")
+    x, y = lg.coordinates("x y")
+    s = System([x, y], T=x.diff(t) ** 2 / 2 + (1 - t) * y.diff(t) ** 2 / 2, V=x**2 / 2)
+    with pytest.raises(IntegrationError, match="division by zero while evaluating the model") as info:
+        s.simulate(2.0, {x: 1.0, y: 0.5, x.diff(t): 0.0, y.diff(t): 0.0}, {}, max_step=0.02, loop="compiled",
+                   backend="numba")
+    exc = info.value
+    assert exc.t == pytest.approx(1.0, abs=1e-9)
+    p = exc.partial  # the output times (every 0.002) reached
+    assert p.t[-1] == pytest.approx(0.998, abs=1e-12)
+    assert np.allclose(p[x], np.cos(p.t), atol=1e-8) and np.allclose(p[y], 0.5)
