@@ -104,6 +104,14 @@ class LagrangeWarning(UserWarning):
 class UnusedParameterWarning(LagrangeWarning):
     """Values were given for declared parameters that cancel out of the equations of motion (they are
     ignored; the warning names them)."""
+
+
+class ConventionChangeWarning(LagrangeWarning, FutureWarning):
+    """A call relies on a default whose convention changed (its numbers would differ under the new one): the
+    call keeps the old convention for a deprecation period, and the message names the change and the call that
+    states the convention explicitly. A :class:`FutureWarning`, so it is shown by default."""
+
+
 class InputError(LagrangeError, TypeError):
     """A time-varying input cannot be used as given: a callable with a signature other than ``u(t)`` or
     ``u(t, y)``, or a route that cannot evaluate Python per step (the compiled loops, the Taylor tape, the
@@ -131,6 +139,7 @@ __all__ = [
     "SymbolicTimeoutError",
     "LagrangeWarning",
     "UnusedParameterWarning",
+    "ConventionChangeWarning",
     "MethodError",
     "OptionError",
 ]

@@ -22,7 +22,7 @@ system = System([th], bodies=[body], V=M * g * body.centre_of_mass[1], name="phy
 
 
 def _pivot_reaction_body(_s):
-    F, _tau = support_loads(body, gravity)
+    F, _tau = support_loads(body, gravity, frame="inertial")
     return list(body.R.T * F)
 
 

@@ -22,7 +22,7 @@ system = System([psi, phi], bodies=[disk], forces={psi: tau_psi}, name="disk on 
 
 
 def _bearing_force_sum(_s):
-    F, _tau = support_loads(disk, gravity)
+    F, _tau = support_loads(disk, gravity, frame="inertial")
     return list(disk.R.T * F)
 
 

@@ -36,7 +36,7 @@ f_book = [M * A_book[0] + M * g * st * sph, M * A_book[1] + M * g * st * cph, M 
 
 
 def _tip_reaction_body(_s):
-    F, _tau = support_loads(top, gravity)
+    F, _tau = support_loads(top, gravity, frame="inertial")
     return list(top.R.T * F)
 
 

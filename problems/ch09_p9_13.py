@@ -40,7 +40,7 @@ def _omega_squared(sys_):
 
 
 def _bearing_force_sum(_s):
-    F, _tau = support_loads(body, gravity)
+    F, _tau = support_loads(body, gravity, frame="inertial")
     return list(body.R.T * F)
 
 

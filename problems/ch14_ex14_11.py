@@ -35,14 +35,14 @@ def _omega(_s):
 
 
 def _support_force_body(_s):
-    F, _tau = support_loads(rotor, gravity)
+    F, _tau = support_loads(rotor, gravity, frame="inertial")
     return list(rotor.R.T * F)
 
 
 def _f1x(_s):
     """Bearing 1 (z = +l1) and 2 (z = -l2) carry the support force and the support torque about the c.m.:
     f1x + f2x = F_x, tau_y = f1x l1 - f2x l2  =>  f1x = (tau_y + F_x l2)/(l1 + l2)."""
-    F, tau = support_loads(rotor, gravity)  # both along the inertial axes
+    F, tau = support_loads(rotor, gravity, frame="inertial")  # both along the inertial axes
     Fb, taub = rotor.R.T * F, rotor.R.T * tau  # along the body axes, as the book's (10)
     return (taub[1] + Fb[0] * l2) / (l1 + l2)
 

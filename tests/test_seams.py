@@ -215,7 +215,7 @@ def test_support_loads_of_a_skewed_disc_in_both_frames():
     A, C, w, beta, M = lg.parameters("A C omega beta M")
     R = lg.rot_z(w * t) * lg.rot_x(beta)
     disc = lg.RigidBody(M, lg.Inertia(A, A, C), orientation=R)
-    F_i, tau_i = lg.support_loads(disc)
+    F_i, tau_i = lg.support_loads(disc, frame="inertial")
     F_b, tau_b = lg.support_loads(disc, frame="body")
     assert F_i == sp.zeros(3, 1) and F_b == sp.zeros(3, 1)
     assert sp.simplify(tau_i.dot(tau_i) - ((C - A) * w**2 * sp.sin(beta) * sp.cos(beta)) ** 2) == 0
@@ -223,6 +223,28 @@ def test_support_loads_of_a_skewed_disc_in_both_frames():
     assert sp.simplify(R * tau_b - tau_i) == sp.zeros(3, 1)
     with pytest.raises(ValueError, match="frame"):
         lg.support_loads(disc, frame="space")
+
+
+def test_support_loads_without_frame_keeps_the_old_convention_and_warns():
+    """A call without frame= returns what it always returned — the force along the inertial axes, the torque
+    (and reads the applied torque) along the body axes — and warns naming the explicit call; with frame= it
+    does not warn."""
+    A, C, w, beta, M, k = lg.parameters("A C omega beta M k")
+    R = lg.rot_z(w * t) * lg.rot_x(beta)
+    disc = lg.RigidBody(M, lg.Inertia(A, A, C), orientation=R)
+    torque = (k, 0, 0)
+    with pytest.warns(lg.ConventionChangeWarning, match="frame='inertial'.*frame='body'") as record:
+        F_old, tau_old = lg.support_loads(disc, (0, 0, -M), torque)
+    assert issubclass(record[0].category, lg.LagrangeWarning) and issubclass(record[0].category, FutureWarning)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        F_i, tau_i = lg.support_loads(disc, (0, 0, -M), R * sp.Matrix(torque), frame="inertial")
+        F_b, tau_b = lg.support_loads(disc, R.T * sp.Matrix([0, 0, -M]), torque, frame="body")
+    assert sp.simplify(F_old - F_i) == sp.zeros(3, 1) and F_old == sp.Matrix([0, 0, M])
+    assert sp.simplify(tau_old - tau_b) == sp.zeros(3, 1)  # body axes, as before
+    assert sp.simplify(R * tau_old - tau_i) == sp.zeros(3, 1)
+    # the applied torque is subtracted along the body axes: the body x axis component carries −k
+    assert sp.simplify(tau_old[0] - ((C - A) * w**2 * sp.sin(beta) * sp.cos(beta) - k)) == 0  # ω × Jω, ω = wRᵀe_z
 
 
 # ----- the action of any path --------------------------------------------------------------------------------

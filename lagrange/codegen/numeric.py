@@ -324,31 +324,23 @@ class NumericModel:
         except ZeroDivisionError:
             raise self.singular_error(t, y) from None
 
-    def singular_error(self, t: float, y: np.ndarray) -> SingularMassMatrixError:
-        """An error naming the coordinates involved in the singular mass matrix (or, with constraints,
-        the constraints whose Jacobian rows are dependent) at ``(t, y)``."""
+    def singularity(self, t: float, y: np.ndarray) -> tuple[str, str]:
+        """Why the generated solve fails at ``(t, y)``: ``(kind, text)`` computed from M and the constraint
+        Jacobian there (:func:`lagrange.codegen.singular.diagnose`: ``"dependent"`` constraints, a ``"mass"``
+        matrix singular on the allowed motions, or an ``"ill-conditioned"`` solve at a regular configuration)."""
+        from .singular import diagnose
+
         M, _ = self.mass_and_forcing(t, y)
-        if self.m:
-            A = self.constraint_functions.matrix(t, np.asarray(y)[: self.n])
-            if np.linalg.cond(M + A.T @ A) > 1e12:  # singular even on the constraint manifold
-                M = M + A.T @ A
-        if self.m and np.linalg.cond(M) < 1e12:
-            A = self.constraint_functions.matrix(t, np.asarray(y)[: self.n])
-            names = self.equations.constraint_names
-            state = ", ".join(f"{coordinate_name(c)}={y[i]:.6g}" for i, c in enumerate(self.equations.coordinates))
-            return SingularMassMatrixError(
-                f"the constraints {', '.join(names)} are dependent at t={t:.6g} ({state}): the constraint "
-                f"Jacobian has rank {np.linalg.matrix_rank(A)} < {self.m}. Remove redundant constraints"
-            )
-        w, v = np.linalg.eigh(M)
-        k = int(np.argmin(np.abs(w)))
-        involved = [coordinate_name(c) for c, comp in zip(self.equations.coordinates, v[:, k]) if abs(comp) > 1e-6]
-        state = ", ".join(f"{coordinate_name(c)}={y[i]:.6g}" for i, c in enumerate(self.equations.coordinates))
-        return SingularMassMatrixError(
-            f"the mass matrix is singular at t={t:.6g} ({state}): smallest eigenvalue {w[k]:.3g}, "
-            f"coordinates involved: {', '.join(involved)}. A massless point or a coordinate that does "
-            "not appear in T gives no inertia: eliminate it (statics) or give it mass"
-        )
+        A = self.constraint_functions.matrix(t, np.asarray(y)[: self.n]) if self.m else None
+        names = [coordinate_name(c) for c in self.equations.coordinates]
+        state = ", ".join(f"{nm}={y[i]:.6g}" for i, nm in enumerate(names))
+        return diagnose(M, A, names, self.equations.constraint_names if self.m else (), where=f"at t={t:.6g} ({state})")
+
+    def singular_error(self, t: float, y: np.ndarray) -> SingularMassMatrixError:
+        """An error naming the cause of the failed solve at ``(t, y)`` (:meth:`singularity`): the dependent
+        constraints, or the coordinates of the singular mass matrix, with the ranks; or, at a regular
+        configuration, the ill-conditioning."""
+        return SingularMassMatrixError(self.singularity(t, y)[1])
 
     @cached_property
     def constraint_functions(self) -> ConstraintFunctions:

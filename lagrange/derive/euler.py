@@ -13,10 +13,12 @@ contact forces, Wells 9.2 and 9.10) along a motion.
 
 from __future__ import annotations
 
+import warnings
+
 import sympy as sp
 
 from ..conventions import t
-from ..errors import DeclarationError
+from ..errors import ConventionChangeWarning, DeclarationError
 from ..model.bodies import as_vector
 
 __all__ = ["euler_equations", "projected_residuals", "support_loads"]
@@ -38,11 +40,12 @@ def projected_residuals(body, coordinates, torque=(0, 0, 0)) -> list:
 
 
 _FRAMES = ("inertial", "body")
+_UNSET = object()
 
 
 def support_loads(body, applied_force=(0, 0, 0), applied_torque=(0, 0, 0), *,
-                  frame: str = "inertial") -> tuple[sp.Matrix, sp.Matrix]:
-    r"""Force and torque about the centre of mass that the supports exert, both in one frame.
+                  frame: str = _UNSET) -> tuple[sp.Matrix, sp.Matrix]:
+    r"""Force and torque about the centre of mass that the supports exert, both in the components of ``frame``.
 
     .. math:: \mathbf F = M\mathbf a_{cm} - \mathbf F_{applied}\ \text{(Wells 9.2)},\qquad
               \boldsymbol\tau = J_c\dot{\boldsymbol\omega} + \boldsymbol\omega\times J_c\boldsymbol\omega
@@ -55,28 +58,45 @@ def support_loads(body, applied_force=(0, 0, 0), applied_torque=(0, 0, 0), *,
     body : :class:`~lagrange.RigidBody`
     applied_force, applied_torque : 3-vectors in the components of ``frame`` (the torque about the centre of
         mass)
-    frame : ``"inertial"`` (default: components along the inertial axes) or ``"body"`` (along the body axes,
-        ``R^T`` times the inertial components, R the body's orientation)
+    frame : ``"inertial"`` (components along the inertial axes) or ``"body"`` (along the body axes, ``R^T``
+        times the inertial components, R the body's orientation). Give it: a call without ``frame`` keeps the
+        earlier mixed convention — force (given and returned) along the inertial axes, torque (given and
+        returned) along the body axes — and warns with
+        :class:`~lagrange.errors.ConventionChangeWarning`; ``frame`` will become a required keyword.
 
     Returns
     -------
     (F, tau) : two 3×1 Matrices, both in the components of ``frame``.
 
+    Raises
+    ------
+    ValueError
+        ``frame`` is neither ``"inertial"`` nor ``"body"``.
+    DeclarationError
+        ``body`` is not a rigid body.
+
     The torque about the centre of mass excludes the support force's own moment; add ``r × F`` for a
     support at body point r (r and F in the same frame).
     """
-    if frame not in _FRAMES:
+    legacy = frame is _UNSET
+    if not legacy and frame not in _FRAMES:
         raise ValueError(f"frame must be 'inertial' or 'body', got {frame!r}")
     if not all(hasattr(body, a) for a in ("angular_velocity", "inertia", "R", "com", "centre_of_mass")):
         raise DeclarationError(f"support_loads needs a RigidBody, got {body!r} (a particle's support force is "
                                "m a − F_applied, with no torque)", subject="support_loads")
+    if legacy:
+        warnings.warn("support_loads(body, ...) without frame= returns the force along the inertial axes and the "
+                      "torque along the body axes (and reads applied_torque along the body axes), as it always "
+                      "has; frame= will become required. Pass frame='inertial' for both along the inertial "
+                      "axes, or frame='body' for both along the body axes", ConventionChangeWarning, stacklevel=2)
+        frame = "inertial"
     M = body.mass
     R = body.R
     Fa = as_vector(applied_force, "applied force")
     Ta = as_vector(applied_torque, "applied torque")
     if frame == "body":
         Fa = R * Fa
-    else:
+    elif not legacy:
         Ta = R.T * Ta
     F = M * body.centre_of_mass.diff(t, 2) - Fa  # inertial components
     c = body.com
@@ -86,4 +106,4 @@ def support_loads(body, applied_force=(0, 0, 0), applied_torque=(0, 0, 0), *,
     tau = Jc * w.diff(t) + w.cross(Jc * w) - Ta  # body axes
     if frame == "body":
         return R.T * F, tau
-    return F, R * tau
+    return F, tau if legacy else R * tau

@@ -240,20 +240,29 @@ def _accept_factor(err, exponent, step_rejected) -> float:
 @njit(cache=True, error_model="numpy")
 def _attempt(f, dop, S, A, B, C, order, t, t1, h_abs, direction, min_step, y, p, K, yt, y_new, scale, w, rtol,
              atol):
-    """Try steps from t until one is accepted: ``(status, t_new, h, h_abs of the next step, rejections)``."""
+    """Try steps from t until one is accepted: ``(status, t_new, h, h_abs of the next step, rejections)``.
+
+    A trial stage at which the model's solve fails (``f`` returns False) rejects the step and shrinks it by the
+    minimum factor 0.2, as a NaN error estimate does in scipy's loop; when the step size then collapses, the
+    status is the failed solve (3), not a plain collapse (1)."""
     exponent = -1.0 / (order + 1.0)
     step_rejected = False
     rejected = 0
+    failed = False
     while True:
         if h_abs < min_step:
-            return 1, t, 0.0, h_abs, rejected
+            return 3 if failed else 1, t, 0.0, h_abs, rejected
         t_new = t + h_abs * direction
         if direction * (t_new - t1) > 0.0:
             t_new = t1
         h = t_new - t
         h_abs = abs(h)
-        if not _step(f, S, A, B, C, t, h, y, p, K, yt, y_new):
-            return 3, t, h, h_abs, rejected
+        failed = not _step(f, S, A, B, C, t, h, y, p, K, yt, y_new)
+        if failed:
+            h_abs *= 0.2
+            step_rejected = True
+            rejected += 1
+            continue
         for i in range(y.size):
             scale[i] = atol + max(abs(y[i]), abs(y_new[i])) * rtol
         err = _error(dop, K, h, scale, yt, w)

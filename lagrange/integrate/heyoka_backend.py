@@ -16,16 +16,22 @@ Scope: unconstrained analytic systems (as ``method="taylor"``); time-varying inp
 multipliers and friction switches are refused.
 
 Interrupts: heyoka's loop does not check for signals, so in the main thread a trivial Python step callback is
-passed (about 0.3 µs per step): Ctrl-C's KeyboardInterrupt is raised in it and propagates out of heyoka within
-one step. The output grid is propagated in chunks of :data:`CHUNK` points, so the outputs of the finished
-chunks survive: :class:`~lagrange.errors.IntegrationInterrupted` carries them in ``partial``.
+passed (about 0.3 µs per step), where Python acts on a pending Ctrl-C within one step. While the run lasts,
+Python's default SIGINT handler is replaced by one that only notes the interrupt (:class:`_Interrupt`); the
+callback then returns False, heyoka stops after the step with the output points it has reached, and
+:class:`~lagrange.errors.IntegrationInterrupted` carries them in ``partial``, followed by the state reached.
+(Under another SIGINT handler, or a KeyboardInterrupt raised by other means, the exception propagates out of
+heyoka: the grid is propagated in chunks of :data:`CHUNK` points, and the outputs of the finished chunks and
+the state reached are kept.)
 """
 
 from __future__ import annotations
 
 import math
+import signal
 import threading
 import weakref
+from contextlib import contextmanager
 
 import numpy as np
 
@@ -143,9 +149,44 @@ def _event_results(recorders, n2: int, direction: float) -> tuple[list, list]:
 
 
 def _tick(ta) -> bool:
-    """heyoka's step callback: a Python frame per step, where a pending Ctrl-C is raised (see the module
-    docstring); never stops the run itself."""
+    """heyoka's step callback without a SIGINT handler of ours: a Python frame per step, where a pending Ctrl-C
+    is raised (see the module docstring); never stops the run itself."""
     return True
+
+
+class _Interrupt:
+    """Ctrl-C noted during a heyoka run: :meth:`handler` is the SIGINT handler, :meth:`tick` the step callback,
+    which stops heyoka (returns False) once the signal came."""
+
+    def __init__(self):
+        self.caught = False
+
+    def handler(self, signum, frame) -> None:
+        self.caught = True
+
+    def tick(self, ta) -> bool:
+        return not self.caught
+
+
+@contextmanager
+def _noting_sigint(kw: dict):
+    """In the main thread: the step callback in ``kw``, and — when Python's default SIGINT handler is in force —
+    a handler that only notes Ctrl-C for the run's duration (restored after); yields the :class:`_Interrupt`,
+    or None when the callback is the plain :func:`_tick`."""
+    if threading.current_thread() is not threading.main_thread():
+        yield None
+        return
+    if signal.getsignal(signal.SIGINT) is not signal.default_int_handler:
+        kw["callback"] = _tick
+        yield None
+        return
+    note = _Interrupt()
+    kw["callback"] = note.tick
+    signal.signal(signal.SIGINT, note.handler)
+    try:
+        yield note
+    finally:
+        signal.signal(signal.SIGINT, signal.default_int_handler)
 
 
 def _terminal_stop(outcome) -> bool:
@@ -162,30 +203,22 @@ def _propagate(ta, hy, odes, model, t0, t1, y0, t_eval, max_step, max_steps, lab
     kw = {"max_steps": int(max_steps)}
     if math.isfinite(max_step):
         kw["max_delta_t"] = max_step
-    if threading.current_thread() is threading.main_thread():
-        kw["callback"] = _tick
     rows, steps = [], 0
     try:
-        for i0 in range(0, max(grid.size - 1, 1), CHUNK):  # chunks share their end points
-            res = ta.propagate_grid(np.ascontiguousarray(grid[i0:i0 + CHUNK + 1]), **kw)
-            outcome, steps = res[0], steps + int(res[3])
-            got = np.asarray(res[-1], dtype=float).reshape(-1, odes.nz)
-            rows.append(got if i0 == 0 else got[1:])
-            if outcome != hy.taylor_outcome.time_limit:
-                break
+        with _noting_sigint(kw) as note:
+            for i0 in range(0, max(grid.size - 1, 1), CHUNK):  # chunks share their end points
+                res = ta.propagate_grid(np.ascontiguousarray(grid[i0:i0 + CHUNK + 1]), **kw)
+                outcome, steps = res[0], steps + int(res[3])
+                got = np.asarray(res[-1], dtype=float).reshape(-1, odes.nz)
+                rows.append(got if i0 == 0 else got[1:])
+                if outcome != hy.taylor_outcome.time_limit:
+                    break
+        if note is not None and note.caught:
+            raise _interrupted(ta, odes, model, t0, y0, t_eval, rows, skip, steps, label, None)
+    except IntegrationInterrupted:
+        raise
     except KeyboardInterrupt as exc:
-        Y = np.concatenate(rows)[skip:] if rows else np.empty((0, odes.nz))
-        n2 = 2 * odes.n
-        partial = Trajectory(t=t_eval[:Y.shape[0]].copy(), y=Y[:, :n2].copy(), model=model,
-                             method=(label or "heyoka") + " (interrupted)", success=False,
-                             message=f"interrupted by Ctrl-C at t={ta.time:.9g}", nfev=steps * int(ta.order),
-                             work=None if odes.nz == n2 else Y[:, n2].copy(), initial=(t0, y0.copy()))
-        coords = model.equations.coordinates
-        state = np.asarray(ta.state, dtype=float)
-        raise IntegrationInterrupted(
-            f"the heyoka run was interrupted (Ctrl-C) at t={ta.time:.9g}; the trajectory up to there "
-            f"({Y.shape[0]} output points) is in the exception's `partial` attribute.", t=float(ta.time),
-            state=dict(zip(coords, state[:n2])), partial=partial) from exc
+        raise _interrupted(ta, odes, model, t0, y0, t_eval, rows, skip, steps, label, exc) from exc
     Y = np.concatenate(rows)[skip:]
     direction = 1.0 if t1 >= t0 else -1.0
     if outcome == hy.taylor_outcome.time_limit and ta.time != t1:  # t_eval ends before t1
@@ -215,3 +248,34 @@ def _propagate(ta, hy, odes, model, t0, t1, y0, t_eval, max_step, max_steps, lab
     raise IntegrationError(f"{message}: a blow-up, a singular configuration or too many steps (raise max_steps). "
                            f"The trajectory up to there ({n_out} output points) is in the exception's `partial` "
                            "attribute.", t=float(ta.time), state=dict(zip(coords, state[:n2])), partial=traj)
+
+
+def _interrupted(ta, odes, model, t0, y0, t_eval, rows, skip, steps, label, exc) -> IntegrationInterrupted:
+    """The IntegrationInterrupted of a heyoka run stopped by Ctrl-C: ``partial`` holds the output points
+    reached (``rows``, finite ones before ``ta.time``; the initial state when no chunk finished), then the state
+    reached at ``ta.time`` (after a whole step)."""
+    if rows:
+        Y = np.concatenate(rows)[skip:].reshape(-1, odes.nz)
+    else:  # no chunk finished: the initial state, when it is an output point
+        z0 = np.asarray(y0, dtype=float) if odes.nz == np.size(y0) else np.append(y0, 0.0)
+        Y = z0[None, :] if t_eval.size and t_eval[0] == t0 else np.empty((0, odes.nz))
+    T = t_eval[:Y.shape[0]]
+    direction = 1.0 if t_eval.size == 0 or t_eval[-1] >= t0 else -1.0
+    keep = int(np.sum((direction * (T - ta.time) <= 0) & np.all(np.isfinite(Y), axis=1)))
+    T, Y = T[:keep], Y[:keep]
+    state = np.asarray(ta.state, dtype=float)
+    t_reached = float(ta.time)
+    if (not T.size or T[-1] != t_reached) and direction * (t_reached - t0) > 0 and np.isfinite(state).all():
+        T, Y = np.append(T, t_reached), np.vstack([Y, state[None, :]])
+    n2 = 2 * odes.n
+    partial = None
+    if T.size:
+        partial = Trajectory(t=T.copy(), y=Y[:, :n2].copy(), model=model,
+                             method=(label or "heyoka") + " (interrupted)", success=False,
+                             message=f"interrupted by Ctrl-C at t={t_reached:.9g}", nfev=steps * int(ta.order),
+                             work=None if odes.nz == n2 else Y[:, n2].copy(), initial=(t0, y0.copy()))
+    coords = model.equations.coordinates
+    return IntegrationInterrupted(
+        f"the heyoka run was interrupted (Ctrl-C) at t={t_reached:.9g}; the trajectory up to there "
+        f"({T.size} points: the output times reached, then the state reached) is in the exception's `partial` "
+        "attribute.", t=t_reached, state=dict(zip(coords, state[:n2])), partial=partial)

@@ -40,9 +40,16 @@ def __getattr__(name: str):
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
-def state_function(model: NumericModel, *, with_work: bool):
+def state_function(model: NumericModel, *, with_work: bool, log: StepLog | None = None):
     """``f(t, z)`` for scipy: ``[q̇, q̈]`` (+ the power dh/dt as the last entry when ``with_work``), with a
-    non-finite check that reports the time and state."""
+    non-finite check that reports the time and state.
+
+    With a ``log``, a failed solve of the model (a pivot of the generated LDLᵀ lost) is a rejected trial step,
+    not the end of the run: ``f`` notes the state in ``log`` (:meth:`StepLog.fault`) and returns NaN, so the
+    step's error estimate is NaN and scipy's controller rejects the step and shrinks it (RK23/RK45/DOP853
+    shrink by their minimum factor; Radau's and BDF's Newton iterations fail to converge, which shrinks the
+    step too); a NaN state (a later stage of such a step) gives NaN again. Whether the configuration itself is
+    singular is decided where the run stops (:func:`_trial_fault_error`)."""
     eqs = model.equations
     n2 = 2 * eqs.n
     fun = model.fun
@@ -54,13 +61,22 @@ def state_function(model: NumericModel, *, with_work: bool):
         try:
             return evaluate(t_, z)
         except SingularMassMatrixError as exc:  # mid-run: keep where it happened
+            if log is not None:
+                log.fault(t_, z)
+                return [math.nan] * len(z)
             raise SingularMassMatrixError(str(exc), t=float(t_), state=dict(zip(eqs.coordinates, z))) from None
         except LagrangeError:
             raise
         except (ValueError, OverflowError, ZeroDivisionError) as exc:
             raise model_fault(model, t_, z, exc) from None
 
+    def rejected(t_, z):
+        # the later stages of a step already rejected by a failed solve: the model is not evaluated at NaN
+        return log is not None and log.trial_fault is not None and not np.isfinite(z).all()
+
     def evaluate(t_, z):
+        if rejected(t_, z):
+            return [math.nan] * len(z)
         if power is None:
             out = fun(t_, z)
         else:
@@ -92,6 +108,27 @@ def state_function(model: NumericModel, *, with_work: bool):
         return out
 
     return f
+
+
+def _trial_fault_error(model: NumericModel, log: StepLog) -> LagrangeError | None:
+    """The error of a run whose step size collapsed while trial stages kept failing the model's solve (the
+    last such stage after the last accepted step is within the collapsed step of it): SingularMassMatrixError
+    when the configuration there is singular (dependent constraints, or a mass matrix singular on the
+    motions the constraints allow — computed, :meth:`NumericModel.singularity`), else an IntegrationError
+    naming the ill-conditioned solve at a regular configuration. None when the collapse had another cause."""
+    if log.trial_fault is None:
+        return None
+    t_f, z_f = log.trial_fault
+    y_f = z_f[: 2 * model.n]
+    state = dict(zip(model.equations.coordinates, y_f))
+    kind, text = model.singularity(t_f, y_f)
+    t_a = log.last[0] if log.last is not None else t_f
+    tail = (f" The step size collapsed approaching this state from the last accepted one (t={t_a:.9g}): every "
+            "smaller trial step failed there too.")
+    if kind == "ill-conditioned":
+        return IntegrationError(f"integration stopped at t={t_a:.9g}: the model's linear solve failed in every "
+                                f"trial step: {text}.{tail}", t=t_f, state=state)
+    return SingularMassMatrixError(text + "." + tail, t=t_f, state=state)
 
 
 def _jacobian(model: NumericModel, method: str, conservative: bool):
@@ -184,11 +221,11 @@ def _run_scipy(req: RunRequest, model: NumericModel, y0, t_eval, stabilization: 
     eqs, method, (t0, t1) = req.equations, req.method, req.t_span
     conservative = eqs.is_conservative
     n2 = 2 * eqs.n
-    f = state_function(model, with_work=not conservative)
+    log = StepLog(t_eval)
+    f = state_function(model, with_work=not conservative, log=log)
     z0 = y0 if conservative else np.append(y0, 0.0)
     jac = _jacobian(model, method, conservative)
     all_events = list(req.events) + _contact_events(model)
-    log = StepLog(t_eval)
     kwargs = dict(method=recording(method, log), rtol=req.rtol, atol=req.atol, max_step=req.max_step)
     if jac is not None:
         kwargs["jac"] = jac
@@ -220,7 +257,15 @@ def _run_scipy(req: RunRequest, model: NumericModel, y0, t_eval, stabilization: 
         fault.__cause__ = exc
         raise with_partial(fault, model, log, conservative, t0, y0, method) from exc
     if res.status == -1:
-        raise with_partial(collapse_error(model, res, t0, y0, log), model, log, conservative, t0, y0, method)
+        fault = _trial_fault_error(model, log) or collapse_error(model, res, t0, y0, log)
+        raise with_partial(fault, model, log, conservative, t0, y0, method)
+    if not np.isfinite(res.y).all():  # never NaN from a rejected trial stage in the output
+        raise with_partial(IntegrationError("the run produced non-finite output values after failed solves of the "
+                                            "model; " + collapse_error(model, res, t0, y0, log).args[0]),
+                           model, log, conservative, t0, y0, method)
+    if log.trial_faults:
+        notes.append(f"{log.trial_faults} trial stage(s) at an ill-conditioned or singular solve: steps rejected "
+                     "and shrunk")
     Y = res.y.T
     if eqs.m:
         notes.append(f"constraints: {stabilization}")

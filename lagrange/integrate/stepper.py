@@ -67,6 +67,15 @@ class StepLog:
         self.last: tuple[float, np.ndarray] | None = None
         self.steps = 0
         self._k = 0
+        #: the last ``(t, z)`` since the last accepted step at which the model's solve failed (a trial stage the
+        #: right-hand side answered with NaN, so the step was rejected and shrunk), and how many in all
+        self.trial_fault: tuple[float, np.ndarray] | None = None
+        self.trial_faults = 0
+
+    def fault(self, t: float, z: np.ndarray) -> None:
+        """Note a failed solve in a trial stage at ``(t, z)`` (see :attr:`trial_fault`)."""
+        self.trial_fault = (float(t), np.array(z, dtype=float))
+        self.trial_faults += 1
 
     def start(self, t0: float, y0: np.ndarray, direction: float) -> None:
         self._dir = direction if direction != 0 else 1.0
@@ -81,6 +90,7 @@ class StepLog:
         """Log the step just accepted by ``solver`` (from ``solver.t_old`` to ``solver.t``)."""
         t_new = solver.t
         self.steps += 1
+        self.trial_fault = None
         dense = None
         while self._k < len(self.t_eval) and (self.t_eval[self._k] - t_new) * self._dir <= 0:
             te = self.t_eval[self._k]

@@ -100,6 +100,7 @@ class SimulationTask:
         if "model" in self.options or "events" in self.options:
             raise SweepError("pass the model via `backend` and events as a factory `events(system) -> list`, "
                              "not as simulate options (they must be rebuilt in each worker process)")
+        _check_option_names(self.options)
         self.summaries = tuple(summaries)
         self.setup, self.events = setup, events
         bind = {**self.params, **{k: v for k, v in (first_point or {}).items() if k in self.parameter_names}}
@@ -192,6 +193,26 @@ class InputExpressions:
             out[name] = e.subs({s: values[s.name] for s in e.free_symbols if s.name in values}) \
                 if hasattr(e, "free_symbols") else e
         return {}, {}, out
+
+
+def _check_option_names(options: Mapping) -> None:
+    """SweepError naming every option that is not a keyword of :func:`~lagrange.integrate.run.simulate` (with
+    the closest names), once before any run, instead of the same TypeError in every row."""
+    import difflib
+    import inspect
+
+    from ..integrate.run import simulate
+
+    known = [p.name for p in inspect.signature(simulate).parameters.values()
+             if p.kind is p.KEYWORD_ONLY and p.name not in ("model", "events", "inputs")]
+    unknown = [str(k) for k in options if k not in known]
+    if unknown:
+        hints = []
+        for k in unknown:
+            close = difflib.get_close_matches(k, known, n=2)
+            hints.append(f"{k!r}" + (f" (did you mean {' or '.join(map(repr, close))}?)" if close else ""))
+        raise SweepError(f"unknown simulate option(s) {', '.join(hints)}: the options of a sweep are the keywords "
+                         f"of lagrange.simulate ({', '.join(known)}); the system's inputs go in `inputs=`")
 
 
 def _by_name(system, values: Mapping) -> dict[str, float]:

@@ -147,3 +147,72 @@ def test_time_varying_inputs_are_refused_not_dropped(which):
     run = integrate_heyoka if which == "heyoka" else integrate_taylor
     with pytest.raises(InputError, match=f"method='{which}' cannot follow time-varying inputs"):
         run(model.with_schedule(schedule), (0.0, 1.0), np.zeros(2), [1.0], rtol=1e-9, atol=1e-9)
+
+
+def _oscillator_run(**kw):
+    x = coordinates("x")
+    osc = System([x], T=x.diff(t) ** 2 / 2, V=x**2 / 2)
+    return osc, x, osc.simulate(20.0, {"x": 1.0, "x_dot": 0.0}, {}, method="heyoka", rtol=1e-12, atol=1e-12,
+                                n_points=2001, max_step=0.01, **kw)
+
+
+def _ticks_then(monkeypatch, n: int, action):
+    """Make the heyoka step callback run ``action()`` at its ``n``-th call (then behave as before)."""
+    from lagrange.integrate import heyoka_backend
+
+    calls = {"n": 0}
+    tick = heyoka_backend._Interrupt.tick
+
+    def counting(self, ta):
+        calls["n"] += 1
+        if calls["n"] == n:
+            action()
+        return tick(self, ta)
+
+    monkeypatch.setattr(heyoka_backend._Interrupt, "tick", counting)
+
+
+def _check_partial(exc, full, x):
+    p = exc.partial
+    assert p is not None and not p.success and len(p.t) >= 2 and 0 < p.t[-1] < 20.0
+    assert p.t[-1] == pytest.approx(exc.t) and p.y[-1, 0] == pytest.approx(exc.state[x])
+    k = len(p.t) - 1  # the output times reached, as in the uninterrupted run; then the state reached
+    np.testing.assert_array_equal(p.t[:k], full.t[:k])
+    np.testing.assert_allclose(p.y[:k], full.y[:k], rtol=0, atol=1e-13)
+    np.testing.assert_allclose(p[x], np.cos(p.t), atol=1e-9)  # the state reached too
+
+
+def test_ctrl_c_keeps_the_output_points_reached(monkeypatch):
+    """SIGINT during a heyoka run: heyoka stops after the step, and ``partial`` holds every output point
+    reached (not only those of finished chunks) and the state reached."""
+    import signal
+
+    _hy()
+    osc, x, full = _oscillator_run()
+    _ticks_then(monkeypatch, 300, lambda: signal.raise_signal(signal.SIGINT))
+    with pytest.raises(KeyboardInterrupt) as info:
+        _oscillator_run()
+    exc = info.value
+    from lagrange.errors import IntegrationInterrupted
+
+    assert isinstance(exc, IntegrationInterrupted)
+    _check_partial(exc, full, x)
+    assert len(exc.partial.t) > 2  # inside the first chunk of output points
+    assert signal.getsignal(signal.SIGINT) is signal.default_int_handler  # restored
+
+
+def test_keyboard_interrupt_raised_in_the_callback_keeps_a_partial_trajectory(monkeypatch):
+    """A KeyboardInterrupt raised in the step callback itself propagates out of heyoka: the output points of
+    the finished chunks and the state reached are kept (never a header-only partial)."""
+    _hy()
+
+    def interrupt():
+        raise KeyboardInterrupt
+
+    osc, x, full = _oscillator_run()
+    for n in (5, 600):  # inside the first chunk, and after some chunks finished
+        _ticks_then(monkeypatch, n, interrupt)
+        with pytest.raises(KeyboardInterrupt) as info:
+            _oscillator_run()
+        monkeypatch.undo()
+        _check_partial(info.value, full, x)

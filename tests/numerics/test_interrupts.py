@@ -186,6 +186,13 @@ def test_compiled_loops_interrupted_with_partial(options):
     _check_child(options)
 
 
+def test_heyoka_interrupted_with_partial():
+    """SIGINT during a heyoka run: the partial trajectory holds the initial point and the state reached (it was
+    header-only: the output points of an unfinished chunk were lost)."""
+    pytest.importorskip("heyoka")
+    _check_child({"method": "heyoka", "max_step": 0.01, "t_end": 1e6})
+
+
 @pytest.fixture(scope="module")
 def henon():
     pytest.importorskip("numba")

@@ -248,3 +248,67 @@ def test_killed_worker_on_a_dask_cluster_blames_only_the_crashing_run():
         table = lg.sweep(_crash_at_2_slowly, {"a": [1.0, 2.0, 3.0]}, executor=client, progress=False)
     assert table["status"].tolist() == ["ok", "died", "ok"], table[["a", "status", "error"]]
     assert table["y"].tolist()[::2] == [1.0, 9.0]
+
+
+# ----- functions identified by what they compute ---------------------------------------------------------------
+def _config(*summaries):
+    from lagrange.sweep.task import SimulationTask
+
+    return run_config(SimulationTask(OSC, 1.0, {"x": 1.0, "x_dot": 0.0}, {"mass": 1.0, "k": 1.0},
+                                     summaries=summaries))
+
+
+def _module_function(source: str, name: str, module: str = "user_summaries", **globals_):
+    """``name`` from ``source`` executed as the module ``module`` with the given globals (a user's file)."""
+    namespace = {"__name__": module, **globals_}
+    exec(compile(source, f"{module}.py", "exec"), namespace)  # noqa: S102 - the test's own source
+    return namespace[name]
+
+
+def test_functions_are_identified_by_code_closure_defaults_and_globals():
+    from lagrange.sweep.identity import describe
+
+    def final(tr):
+        return float(tr.y[-1, 0])
+
+    assert _config(final) == _config(final)  # the same function twice
+    assert _config(lambda tr: float(tr.t[-1])) == _config(lambda tr: float(tr.t[-1]))  # same body, same code
+    assert _config(lambda tr: float(tr.t[-1])) != _config(lambda tr: float(tr.t[0]))  # every lambda looks alike
+    assert _config(lambda tr: 2.0 * tr.t[-1]) != _config(lambda tr: 3.0 * tr.t[-1])  # a changed constant
+
+    def scaled(c):
+        return lambda tr: c * tr.t[-1]
+
+    assert _config(scaled(2.0)) == _config(scaled(2.0)) and _config(scaled(2.0)) != _config(scaled(3.0))
+    assert describe(lambda tr, c=1.0: c) != describe(lambda tr, c=2.0: c)  # defaults
+    # a global of the user's module, and a helper function of that module, by value and by code
+    src = "def helper(tr):\n    return {body}\n\ndef summary(tr):\n    return SCALE * helper(tr)\n"
+    base = _module_function(src.format(body="tr.t[-1]"), "summary", SCALE=2.0)
+    assert _config(base) == _config(_module_function(src.format(body="tr.t[-1]"), "summary", SCALE=2.0))
+    assert _config(base) != _config(_module_function(src.format(body="tr.t[-1]"), "summary", SCALE=3.0))
+    assert _config(base) != _config(_module_function(src.format(body="tr.t[0]"), "summary", SCALE=2.0))
+    # moving a function in its file changes nothing; recursion terminates
+    moved = _module_function("\n\n\n" + src.format(body="tr.t[-1]"), "summary", SCALE=2.0)
+    assert _config(base) == _config(moved)
+    rec = _module_function("def f(n):\n    return 1 if n < 1 else n * f(n - 1)\n", "f")
+    assert describe(rec) == describe(_module_function("def f(n):\n    return 1 if n < 1 else n * f(n - 1)\n", "f"))
+
+
+def test_resume_recomputes_rows_after_a_summary_lambda_changed(tmp_path):
+    store = tmp_path / "runs.csv"
+    first = lg.sweep(OSC, OVER, summaries=[lambda tr: float(tr.y[-1, 0])], store=store, **BASE)
+    resumed = lg.sweep(OSC, OVER, summaries=[lambda tr: 2.0 * float(tr.y[-1, 0])], store=store, resume=True,
+                       **BASE)
+    assert np.allclose(resumed["<lambda>"], 2.0 * first["<lambda>"]) and np.all(first["<lambda>"] != 0)
+    assert (resumed["run_config"] != first["run_config"]).all()
+
+
+def test_misspelt_option_fails_once_before_any_run(marks):
+    with pytest.raises(SweepError, match=r"'rtoll' \(did you mean 'rtol'"):
+        lg.sweep(OSC, OVER, summaries=[mark_call], rtoll=1e-6, **BASE)
+    assert marks() == 0
+    with pytest.raises(SweepError, match="'colour'"):
+        lg.sweep(OSC, OVER, summaries=[mark_call], colour="red", method="RK45", **BASE)
+    assert marks() == 0
+    table = lg.sweep(OSC, OVER, summaries=[mark_call], rtol=1e-6, method="RK45", **BASE)  # known options run
+    assert marks() == 2 and (table["status"] == "ok").all()
