@@ -167,3 +167,36 @@ def test_cli_modes_prints_frequencies_from_the_roots(tmp_path):
     assert "characteristic roots" in freq
     assert numbers(freq) == pytest.approx([0.0, omega], rel=1e-7, abs=1e-12)
     assert numbers(period)[1] == pytest.approx(2 * np.pi / omega, rel=1e-7)
+
+
+@pytest.mark.parametrize("root", [1, -1], ids=["slow precession", "fast precession"])
+def test_heavy_top_nutation_about_steady_precession_agrees_with_routhian(root):
+    """Heavy symmetric top (Wells Ex. 11.2) in steady precession Ω at θ0 with spin n: the full 3-coordinate
+    linearization has a gyroscopic b; its nutation frequency equals the Routhian's (ψ, φ reduced out: a 1-D
+    oscillation in θ) and the closed form ω² = ((I3 n − 2 I1 Ω cos θ0)/I1)² + Ω² sin²θ0."""
+    from lagrange import EulerAngles, RigidBody
+
+    psi, th, ph = coordinates("psi theta phi")
+    M, g, l, I1, I3 = parameters("M g l I1 I3")
+    top = RigidBody(M, (I1, I1, I3), orientation=EulerAngles(psi, th, ph), com=(0, 0, l))
+    s = System([psi, th, ph], bodies=[top], V=M * g * top.centre_of_mass[2])
+    vals = {"M": 1.0, "g": 9.81, "l": 0.2, "I1": 0.05, "I3": 0.02}
+    th0, n = 0.5, 40.0
+    # the two precession rates: M g l = Ω (I3 n − I1 Ω cos θ0)
+    a_, b_, c_ = -0.05 * np.cos(th0), 0.02 * n, -1.962
+    w = (-b_ + root * np.sqrt(b_**2 - 4 * a_ * c_)) / (2 * a_)
+    lin = linearize(s, {psi: 0, th: th0, ph: 0}, velocities={psi.diff(t): w, ph.diff(t): n - w * np.cos(th0)},
+                    params=vals)
+    modes = normal_modes(lin)
+    assert modes.kind == "gyroscopic"
+    R = routhian(s)
+    mom = {p.name: p for p in R.momenta}
+    pphi = 0.02 * n
+    ppsi = 0.05 * w * np.sin(th0) ** 2 + pphi * np.cos(th0)
+    red = oscillations_about_steady_motion(R, {th: th0})
+    subs = {sym: vals[sym.name] for sym in s.parameters} | {mom["p_phi"]: pphi, mom["p_psi"]: ppsi}
+    nutation = np.sqrt(float(red.c[0, 0].subs(subs)) / float(red.a[0, 0].subs(subs)))
+    assert modes.omega[-1] == pytest.approx(nutation, rel=1e-8)
+    assert modes.omega[:-1] == pytest.approx([0.0, 0.0], abs=1e-9)  # ψ and φ: free
+    closed = np.sqrt(((0.02 * n - 2 * 0.05 * w * np.cos(th0)) / 0.05) ** 2 + w**2 * np.sin(th0) ** 2)
+    assert modes.omega[-1] == pytest.approx(closed, rel=1e-9)
