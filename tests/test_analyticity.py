@@ -141,6 +141,8 @@ def test_user_function_and_kinks():
     found = obstacle(kinked)
     assert found.kind == "kink" and "x + y" in found.reason
     assert obstacle(System([x, y], T=T2, V=k * sp.sqrt(x**2 + y**2)).derived) is None  # a cone point only
+    unsupported = obstacle(System([x], T=T1, V=k * x**2 / 2, forces={x: -k * sp.asinh(x)}).derived)
+    assert unsupported.kind == "function" and "does not expand (asinh)" in unsupported.reason
 
 
 def test_auto_names_non_smooth_functions_in_the_method_line():
@@ -200,3 +202,14 @@ def test_threshold_on_both_sides_with_the_taylor_method():
         errors[e] = abs(got - ref) / (rtol * 1e-3 + rtol * abs(ref))
         assert (judged(s, p, [0.3, 1.0]) is None) == (e == 0.1)
     assert errors[0.1] < 5 and errors[0.03] > 100, errors
+
+
+def test_auto_names_time_varying_inputs_as_the_reason():
+    """An input schedule's smoothness is unknown: the method line says why the Taylor method is not used."""
+    from lagrange import inputs
+
+    F = inputs("F")
+    s = System([x], T=T1, V=k * x**2 / 2, forces={x: F})
+    sol = s.simulate(1, {x: 0.0, x.diff(t): 0.0}, {"m": 1, "k": 4}, inputs={F: lambda tt: np.sin(tt)},
+                     method="auto")
+    assert not sol.method.startswith("taylor") and "time-varying inputs" in sol.method

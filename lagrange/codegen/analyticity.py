@@ -67,6 +67,8 @@ __all__ = ["Obstacle", "obstacle", "scale_states", "NEAR"]
 NEAR = 0.1
 _ENTIRE = (sp.sin, sp.cos, sp.exp, sp.sinh, sp.cosh)
 _SINGULAR_ARGUMENT = {sp.log: "log", sp.tanh: "tanh", sp.atan: "atan", sp.tan: "tan"}
+#: analytic where defined, but without a recurrence in the Taylor tape (named as such, not as "not analytic")
+_ANALYTIC_ELSEWHERE = (sp.asin, sp.acos, sp.asinh, sp.acosh, sp.atanh, sp.cot, sp.sec, sp.csc, sp.coth, sp.erf)
 
 
 @record(frozen=True, slots=True)
@@ -139,6 +141,8 @@ def _sites(eqs) -> tuple[Obstacle | None, list[tuple[str, sp.Expr, sp.Expr, str]
                 stack.extend(e.args)
             elif isinstance(e, AppliedUndef):
                 return Obstacle(str(e), where, "a user function (its smoothness is unknown)"), sites
+            elif e.func in _ANALYTIC_ELSEWHERE:
+                return Obstacle(str(e), where, f"a function the Taylor tape does not expand ({e.func.__name__})"), sites
             else:
                 return Obstacle(str(e), where, f"not analytic ({type(e).__name__})"), sites
     return None, sites
