@@ -87,6 +87,8 @@ def test_stick_slip_block_regularized_auto_right_at_every_tolerance():
      {"m": 1, "k": 1, "mu": 0.1, "epsilon": 1e-6}, [1.05, 0.0]),
     ("softened 1/r, tiny ε", System([x, y], T=T2, V=-k / sp.sqrt(x**2 + y**2 + eps**2)),
      {"m": 1, "k": 1, "epsilon": 1e-3}, [1.0, 0.0, 0.0, 1.0]),
+    ("(x + y)² + ε² written expanded", System([x, y], T=T2, V=k * sp.sqrt(x**2 + 2 * x * y + y**2 + eps**2)),
+     {"m": 1, "k": 1, "epsilon": 1e-6}, [1.0, 0.0, 0.0, 0.0]),
 ])
 def test_near_singularities_are_flagged(name, system, params, y0):
     found = judged(system, params, y0)

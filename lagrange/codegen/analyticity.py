@@ -19,8 +19,9 @@ pass over the expression trees of ``M`` and ``f`` (and the work rate of a non-co
 3. **Near-singularities** of a *singular site* — the base of a non-integer or negative power, the argument of
    ``log``, ``tanh`` or ``atan`` — judged with the run's parameter values. A base
    :math:`g = c + h` with a constant :math:`c > 0` and a state-dependent part :math:`h \ge 0` (a sum of even
-   powers with non-negative coefficients, the form of every regularization: :math:`x^2 + \varepsilon^2`,
-   :math:`|v|^2 + \varepsilon^2`) never vanishes on real states but does at complex ones at the relative distance
+   powers with non-negative coefficients, or a small polynomial of even multiplicities such as :math:`(x+y)^2`
+   expanded: the form of every regularization, :math:`x^2 + \varepsilon^2`, :math:`|v|^2 + \varepsilon^2`) never
+   vanishes on real states but does at complex ones at the relative distance
    :math:`\rho = \sqrt{c/|h|_{\text{scale}}}` (exact when h is a square); ``tanh(u)`` has poles at
    :math:`u = \pm i\pi/2`, ``atan(u)`` branch points at :math:`u = \pm i`: :math:`\rho = (\pi/2)/|u|_{\text{scale}}`,
    :math:`1/|u|_{\text{scale}}`. The scale is the largest value over the initial state and the *scale states*:
@@ -222,14 +223,24 @@ def _kink(arg, state) -> str | None:
     u = moving[0]
     if u.is_Pow and u.exp.is_Integer and u.exp % 2 == 0:
         return str(u.base)
+    even = _square_free(u, state)
+    return str(even[0][0]) if even and even[0][1] else None
+
+
+def _square_free(u, state) -> list[tuple[sp.Expr, bool]] | None:
+    """The state-dependent factors of a small polynomial ``u`` in the state with whether each has even
+    multiplicity (even ones first), or None (not a small polynomial, or a negative constant factor)."""
     used = [s for s in state if s in u.free_symbols]
-    if not u.is_Add or sp.count_ops(u) > _SMALL_POLYNOMIAL or not u.is_polynomial(*used):
+    if not used or not u.is_Add or sp.count_ops(u) > _SMALL_POLYNOMIAL or not u.is_polynomial(*used):
         return None
-    _, factors = sp.sqf_list(u, *used)
-    return next((str(f.as_expr()) for f, k in factors if k % 2 == 0 and f.free_symbols & set(used)), None)
+    const, factors = sp.sqf_list(u, *used)
+    if not sp.sympify(const).is_positive:
+        return None
+    found = [(f.as_expr(), k % 2 == 0) for f, k in factors if f.free_symbols & set(used)]
+    return sorted(found, key=lambda fk: not fk[1])
 
 
-#: a polynomial argument up to this many operations is factored for a kink (a square-free factorization)
+#: a polynomial argument up to this many operations is factored (a square-free factorization)
 _SMALL_POLYNOMIAL = 60
 
 
@@ -246,15 +257,19 @@ def _near(kind: str, arg, state, points, t_end) -> tuple[float, tuple] | None:
     if kind == "tan":
         return None  # real poles: genuine
     c, h = arg.as_independent(*state, _t, as_Add=True)
-    if not (c.is_Number and c > 0) or not h.args or not _nonnegative(h):
+    if not (c.is_Number and c > 0) or not h.args or not _nonnegative(h, state):
         return None
     scale = _largest(h, state, points, t_end)
     rho = math.sqrt(float(c) / scale) if scale else math.inf
     return (rho, _probe(h, state)) if rho < NEAR else None
 
 
-def _nonnegative(h) -> bool:
-    """``h`` a sum of terms ``w·Π u_i^(2k_i)`` with ``w ≥ 0`` (structurally, no assumptions queried)."""
+def _nonnegative(h, state) -> bool:
+    """``h`` a sum of terms ``w·Π u_i^(2k_i)`` with ``w ≥ 0`` (structurally, no assumptions queried), or a small
+    polynomial whose factors all have even multiplicity (``x² + 2xy + y²``)."""
+    even = _square_free(h, state)
+    if even and all(k for _, k in even):
+        return True
     for term in sp.Add.make_args(h):
         coeff, rest = term.as_coeff_Mul()
         if coeff.is_negative:
