@@ -8,7 +8,9 @@ with ``a = (∂²T/∂q̇∂q̇)₀`` (Wells 10.4), ``b = −(∂f/∂q̇)₀`` 
 gyroscopic terms) and ``c = −(∂f/∂q)₀`` (``= (∂²V/∂q∂q)₀`` for a conservative system, 10.6).
 Undamped frequencies solve ``|a ω² − c| = 0`` (10.10, note the book's order); damped characteristic
 roots solve ``|a λ² + b λ + c| = 0`` (10.30). Normal coordinates ``g = Φᵀ a s`` with the modes Φ
-normalized so that ``Φᵀ a Φ = 1`` (Wells' c_s, 10.21) give ``T = ½Σġ²``, ``V = ½Σω²g²`` (10.22).
+normalized so that ``Φᵀ a Φ = 1`` (Wells' c_s, 10.21) give ``T = ½Σġ²``, ``V = ½Σω²g²`` (10.22). About a steady
+motion b is gyroscopic (skew-symmetric, Wells 11.12): :func:`normal_modes` then takes the frequencies
+``|Im λ|`` from the roots, never from (a, c) alone, and refuses a damping (symmetric) b.
 Zero roots (free translation or rotation) and repeated roots are handled by the eigen-solver.
 
 Every linearization also gives the first-order state-space model ``ẋ = 𝒜 x + ℬ δu`` (inputs ``u``:
