@@ -85,6 +85,8 @@ _EXPORTS: dict[str, str] = {
     "LagrangeWarning": ".errors",
     "UnusedParameterWarning": ".errors",
     "ConventionChangeWarning": ".errors",
+
+    "NonAnalyticWarning": ".errors",
     "CacheError": ".errors",
     "CacheIntegrityWarning": ".errors",
     "MethodError": ".errors",
@@ -209,6 +211,8 @@ __all__ = [
     "LagrangeWarning",
     "UnusedParameterWarning",
     "ConventionChangeWarning",
+
+    "NonAnalyticWarning",
     "CacheError",
     "CacheIntegrityWarning",
     "is_conservative",

@@ -655,20 +655,20 @@ def _cmd_modes(args) -> int:
     if lin.a is None:
         print("(non-holonomic: no second-order form, so no normal modes)")
         return 0
-    a, b, c = lin.numeric()
-    try:
+    try:  # b = 0: real modes; gyroscopic b: frequencies |Im| of the roots; damped b: refused (roots only)
         modes = normal_modes(lin)
     except LagrangeError as exc:
         print(f"no normal modes: {exc}")
         return 0
-    print("angular frequencies:", np.array2string(modes.omega, precision=8))
+    gyroscopic = modes.kind == "gyroscopic"
+    print("angular frequencies" + (" (|Im| of the characteristic roots; gyroscopic b)" if gyroscopic else "") + ":",
+          np.array2string(modes.omega, precision=8))
     print("periods:", np.array2string(modes.periods, precision=8))
-    print("mode shapes (columns, normalized to a):\n", np.array2string(modes.shapes, precision=6))
+    kind = "complex amplitudes and phases" if gyroscopic else "normalized to a"
+    print(f"mode shapes (columns, {kind}):\n", np.array2string(modes.shapes, precision=6))
     if constrained:
         labels = ", ".join(str(getattr(q, "name", q)) for q in eqs.q)
         print(f"mode shapes in all coordinates ({labels}):\n", np.array2string(modes.full_shapes, precision=6))
-    if np.any(b != 0):
-        print("(b is not zero: the damped/gyroscopic characteristic roots above govern the motion)")
     return 0
 
 

@@ -113,7 +113,8 @@ def modes_html(modes, names: Iterable[str] | None = None) -> str:
     names = list(names) if names is not None else [f"s{i + 1}" for i in range(n)]
     rows = []
     for k in range(n):
-        shape = np.asarray(modes.shapes[:, k], dtype=float)
+        shape = np.asarray(modes.shapes[:, k])  # complex for gyroscopic modes (amplitude and phase)
+        shape = shape.real if not np.iscomplexobj(shape) or not np.any(shape.imag) else shape
         big = shape[np.argmax(np.abs(shape))] if np.any(shape) else 1.0
         rows.append([k + 1, f"{modes.omega[k]:.6g}", f"{modes.periods[k]:.6g}",
                      *(f"{v:.4g}" for v in shape / big)])

@@ -214,3 +214,13 @@ class ExpressionTooLarge(LagrangeError, ValueError):
 
 
 __all__ += ["ExpressionTooLarge"]
+
+
+class NonAnalyticWarning(LagrangeWarning):
+    """A Taylor-series method (``method="taylor"`` or ``"heyoka"``) was asked to run equations that are not
+    analytic, or nearly not (a kink, a regularization with a small parameter): its step control can step across
+    the layer and return a wrong answer. The message names the expression and suggests DOP853 or Radau
+    (:mod:`lagrange.codegen.analyticity`)."""
+
+
+__all__ += ["NonAnalyticWarning"]

@@ -8,7 +8,9 @@ with ``a = (∂²T/∂q̇∂q̇)₀`` (Wells 10.4), ``b = −(∂f/∂q̇)₀`` 
 gyroscopic terms) and ``c = −(∂f/∂q)₀`` (``= (∂²V/∂q∂q)₀`` for a conservative system, 10.6).
 Undamped frequencies solve ``|a ω² − c| = 0`` (10.10, note the book's order); damped characteristic
 roots solve ``|a λ² + b λ + c| = 0`` (10.30). Normal coordinates ``g = Φᵀ a s`` with the modes Φ
-normalized so that ``Φᵀ a Φ = 1`` (Wells' c_s, 10.21) give ``T = ½Σġ²``, ``V = ½Σω²g²`` (10.22).
+normalized so that ``Φᵀ a Φ = 1`` (Wells' c_s, 10.21) give ``T = ½Σġ²``, ``V = ½Σω²g²`` (10.22). About a steady
+motion b is gyroscopic (skew-symmetric, Wells 11.12): :func:`normal_modes` then takes the frequencies
+``|Im λ|`` from the roots, never from (a, c) alone, and refuses a damping (symmetric) b.
 Zero roots (free translation or rotation) and repeated roots are handled by the eigen-solver.
 
 Every linearization also gives the first-order state-space model ``ẋ = 𝒜 x + ℬ δu`` (inputs ``u``:
@@ -40,7 +42,7 @@ from ..errors import AnalysisError, LagrangeError
 from ..model.coordinates import coordinate_name, position_symbol, velocity_symbol
 from ..records import record
 from ..safe_sympify import sympify as _sympify
-from ..simplification import factor, simplify, solve
+from ..simplification import factor, is_zero, simplify, solve
 from . import manifold
 from .equilibria import Equilibrium, equilibria, equilibrium_equations
 
@@ -196,19 +198,26 @@ class LinearModel:
         return factor((sp.Matrix(self.a) * lam**2 + sp.Matrix(self.b) * lam + sp.Matrix(self.c)).det())
 
     def _second_order(self, what: str):
+        """(a, c) for the undamped frequency equation; AnalysisError when there is no second-order form, or
+        when b is not zero (|a ω² − c| would drop its damping or gyroscopic terms)."""
         if self.a is None:
             raise AnalysisError(f"{what} needs a second-order form, which a non-holonomic system does not have: "
                                 "use characteristic_roots")
+        if self.b is not None and not all(is_zero(x) for x in sp.Matrix(self.b)):
+            raise AnalysisError(f"{what} |a ω² − c| holds only when b = 0; here b = {sp.Matrix(self.b).tolist()} "
+                                "(damping or gyroscopic terms): use characteristic_polynomial |a λ² + b λ + c| or "
+                                "characteristic_roots")
         return sp.Matrix(self.a), sp.Matrix(self.c)
 
     def frequency_equation(self, omega: sp.Symbol | None = None) -> sp.Expr:
-        """Wells' fundamental determinant ``|a ω² − c|`` (10.10)."""
+        """Wells' fundamental determinant ``|a ω² − c|`` (10.10); AnalysisError when b ≠ 0 (see
+        :meth:`characteristic_polynomial`)."""
         a, c = self._second_order("the frequency equation")
         omega = omega or sp.Symbol("omega", positive=True)
         return (a * omega**2 - c).det()
 
     def squared_frequencies(self) -> list:
-        """Symbolic roots ω² of ``|a ω² − c| = 0`` (small systems)."""
+        """Symbolic roots ω² of ``|a ω² − c| = 0`` (small systems; AnalysisError when b ≠ 0)."""
         a, c = self._second_order("the squared frequencies")
         w2 = sp.Symbol("w2")
         return solve((a * w2 - c).det(), w2, what="the frequency equation")
@@ -378,16 +387,24 @@ def _unconstrained_symbolic(system, q0, v0, u0, inputs) -> LinearModel:
 
 @record(frozen=True)
 class Modes:
-    """Numeric normal modes of ``a s̈ + c s = 0``.
+    """Numeric normal modes of ``a s̈ + b s + c s = 0`` with ``b`` zero or gyroscopic (skew-symmetric).
+
+    Without ``b`` (``kind == "undamped"``) the modes are real, ``c Φ = a Φ ω²`` with ``Φᵀ a Φ = I``. With a
+    gyroscopic ``b`` (``kind == "gyroscopic"``, e.g. about a steady motion) the frequencies are ``|Im λ|`` of
+    the roots of ``|a λ² + b λ + c| = 0`` and the shapes are complex (each coordinate's amplitude and phase:
+    the motion in mode k is ``Re(Φ_k e^{iω_k t})``); see :func:`normal_modes`.
 
     Attributes
     ----------
     omega : ndarray (n,) — angular frequencies, ascending (0 for rigid-body modes)
-    shapes : ndarray (n, n) — column s is mode s, normalized so that ``shapesᵀ a shapes = I`` (Wells 10.21)
+    shapes : ndarray (n, n) — column s is mode s, normalized so that ``shapesᴴ a shapes`` has a unit diagonal
+        (``shapesᵀ a shapes = I`` for real modes, Wells 10.21); complex for gyroscopic modes
     a, c : the matrices used
     coordinates : tuple — the coordinates of the rows of ``shapes`` (the independent ones when constrained)
     all_coordinates : tuple — every coordinate of the system
     full_shapes : ndarray (n_all, n) — the modes in all coordinates, ``C₀ shapes`` (``δq = C₀ s``)
+    b : the gyroscopic matrix used (None: zero)
+    roots : ndarray (2n,) complex or None — the characteristic roots the gyroscopic frequencies come from
     """
 
     omega: np.ndarray
@@ -397,6 +414,18 @@ class Modes:
     coordinates: tuple = ()
     all_coordinates: tuple = ()
     full_shapes: np.ndarray | None = None
+    b: np.ndarray | None = None
+    roots: np.ndarray | None = None
+
+    @property
+    def kind(self) -> str:
+        """``"undamped"`` (b = 0: real modes) or ``"gyroscopic"`` (skew-symmetric b: complex modes)."""
+        return "undamped" if self.b is None else "gyroscopic"
+
+    def _real_modes(self, what: str) -> None:
+        if self.b is not None:
+            raise AnalysisError(f"{what} needs real modes (b = 0); gyroscopic modes are complex and not "
+                                "a-orthogonal: use Modes.motion (the exact linear solution) or simulate")
 
     @property
     def periods(self) -> np.ndarray:
@@ -405,17 +434,21 @@ class Modes:
             return np.where(self.omega > 0, 2 * np.pi / np.where(self.omega > 0, self.omega, 1), np.inf)
 
     def ratios(self, reference: int = 0) -> np.ndarray:
-        """Mode shapes scaled so that component ``reference`` is 1 (Wells' cofactor ratios d_rs/d_1s)."""
+        """Mode shapes scaled so that component ``reference`` is 1 (Wells' cofactor ratios d_rs/d_1s; complex
+        for gyroscopic modes: amplitude ratio and phase)."""
         return self.shapes / self.shapes[reference, :]
 
     def normal_coordinates(self, s) -> np.ndarray:
-        """``g = Φᵀ a s`` (Wells 10.25) for displacement(s) ``s`` of shape (n,) or (m, n)."""
+        """``g = Φᵀ a s`` (Wells 10.25) for displacement(s) ``s`` of shape (n,) or (m, n); real modes only
+        (AnalysisError for gyroscopic modes)."""
+        self._real_modes("normal_coordinates")
         return np.asarray(s) @ (self.shapes.T @ self.a).T
 
     def fit(self, s0, v0):
         """Amplitude and phase of each mode for initial displacements ``s0`` and velocities ``v0``:
         ``s(t) = Σ Φ_s A_s cos(ω_s t + φ_s)`` (Wells 10.27–10.28); a zero mode gets ``g = g0 + ġ0 t``
-        (returned as A = g0, phase = ġ0 for those)."""
+        (returned as A = g0, phase = ġ0 for those). Real modes only (AnalysisError for gyroscopic modes)."""
+        self._real_modes("fit")
         g0, gd0 = self.normal_coordinates(s0), self.normal_coordinates(v0)
         A, ph = np.empty_like(g0), np.empty_like(g0)
         for k, w in enumerate(self.omega):
@@ -427,9 +460,14 @@ class Modes:
         return A, ph
 
     def motion(self, s0, v0, times) -> np.ndarray:
-        """The linear solution at ``times``, shape (m, n)."""
-        A, ph = self.fit(s0, v0)
+        """The linear solution at ``times``, shape (m, n) (gyroscopic modes: ``exp(𝒜 t)`` of the state matrix)."""
         times = np.asarray(times, dtype=float)
+        if self.b is not None:
+            x0 = np.concatenate([np.asarray(s0, dtype=float), np.asarray(v0, dtype=float)])
+            A = _state_matrix(self.a, self.b, self.c)
+            n = self.a.shape[0]
+            return np.array([(scipy.linalg.expm(A * tk) @ x0)[:n] for tk in times.ravel()]).reshape(-1, n)
+        A, ph = self.fit(s0, v0)
         g = np.empty((len(times), len(self.omega)))
         for k, w in enumerate(self.omega):
             g[:, k] = A[k] * np.cos(w * times + ph[k]) if w > 1e-12 else A[k] + ph[k] * times
@@ -451,17 +489,46 @@ def _linear(linear, params, kw: dict) -> LinearModel:
 
 
 def normal_modes(linear, params: Mapping | None = None, **kwargs) -> Modes:
-    """Generalized symmetric eigenproblem ``c Φ = a Φ ω²`` (scipy.linalg.eigh).
+    r"""Normal modes of ``a s̈ + b ṡ + c s = 0``: undamped (b = 0) or gyroscopic (b skew-symmetric).
+
+    * ``b = 0``: the generalized symmetric eigenproblem ``c Φ = a Φ ω²`` (scipy.linalg.eigh; Wells 10.10),
+      real shapes with ``Φᵀ a Φ = I``.
+    * ``b`` skew-symmetric (gyroscopic, e.g. about a steady motion, Wells 11.12): the quadratic eigenproblem
+      :math:`(a\lambda^2 + b\lambda + c)\,\phi = 0`, solved as the eigenproblem of the state matrix
+      :math:`\mathcal A`. The motion is stable (to first order) only when every root is on the imaginary
+      axis, :math:`\lambda = \pm i\omega`; the frequencies are :math:`\omega = |\operatorname{Im}\lambda|`,
+      one per ± pair, and the shapes the complex displacement parts of the eigenvectors of
+      :math:`+i\omega` (``Modes.kind == "gyroscopic"``). ``c`` need not be positive definite (gyroscopic
+      stabilization, e.g. a sleeping top).
+    * ``b`` with a symmetric (damping) part: refused (:class:`~lagrange.errors.AnalysisError`): the roots are
+      not on the imaginary axis and the undamped modes of (a, c) would silently ignore the damping. Use
+      :func:`characteristic_roots` (damped frequencies ``|Im λ|``, damping ratios ``−Re λ/|λ|``).
+
+    ``b`` counts as zero, or as purely skew, when its (symmetric) part is below 1e-12 of the scale
+    ``max(‖b‖, √(‖a‖‖c‖))``; roots count as imaginary when ``|Re λ| ≤ 1e-6 max(1, |λ|max)``.
 
     ``linear`` is a :class:`LinearModel` or a System (then linearized numerically with ``params`` and the
     keywords of :func:`linearize`: ``about=``, ``velocities=``, ``independent=``, ...). Constrained systems
     (holonomic constraints) give the modes in the independent coordinates (``shapes``) and in all
     coordinates (``full_shapes``). Raises :class:`~lagrange.errors.LagrangeError` when ``a`` is not positive
-    definite, ``c`` has negative eigenvalues (an unstable equilibrium: no oscillation), or the system is
-    non-holonomic (no second-order form: use :func:`characteristic_roots`)."""
+    definite, the equilibrium or steady motion is unstable (``c`` has negative eigenvalues, or a gyroscopic
+    root off the imaginary axis: no oscillation), ``b`` has a damping part, or the system is non-holonomic
+    (no second-order form: use :func:`characteristic_roots`)."""
     linear = _linear(linear, params, kwargs)
-    a, _, c = linear.numeric(params)
+    a, b, c = linear.numeric(params)
     c = (c + c.T) / 2
+    C0 = linear.coordinate_map
+    full = (lambda Phi: Phi) if C0 is None else (
+        lambda Phi: _numeric_matrix(C0, params or linear.params, "the coordinate map") @ Phi)
+    coords = tuple(linear.coordinates), tuple(linear.all_coordinates or linear.coordinates)
+    scale = max(float(np.linalg.norm(b)), float(np.sqrt(np.linalg.norm(a) * np.linalg.norm(c))))
+    damping, gyro = (b + b.T) / 2, (b - b.T) / 2
+    if np.linalg.norm(damping) > _B_ZERO * scale:
+        raise AnalysisError("b has a symmetric (damping) part, so the motion has no undamped normal modes and "
+                            "the modes of (a, c) alone would ignore it: use characteristic_roots (damped "
+                            "frequencies |Im λ|, damping ratios −Re λ/|λ|) or LinearModel.A")
+    if np.linalg.norm(gyro) > _B_ZERO * scale:
+        return _gyroscopic_modes(a, gyro, c, full, coords)
     try:
         w2, Phi = scipy.linalg.eigh(c, a)
     except np.linalg.LinAlgError as exc:
@@ -470,10 +537,47 @@ def normal_modes(linear, params: Mapping | None = None, **kwargs) -> Modes:
     if np.any(w2 < -1e-10 * scale):
         raise LagrangeError(f"unstable equilibrium: negative ω² {w2[w2 < 0]} (c is not positive semi-definite)")
     w2 = np.where(np.abs(w2) < 1e-12 * scale, 0.0, w2)
-    C0 = linear.coordinate_map
-    full = Phi if C0 is None else _numeric_matrix(C0, params or linear.params, "the coordinate map") @ Phi
-    return Modes(np.sqrt(np.maximum(w2, 0.0)), Phi, a, c, tuple(linear.coordinates),
-                 tuple(linear.all_coordinates or linear.coordinates), full)
+    return Modes(np.sqrt(np.maximum(w2, 0.0)), Phi, a, c, *coords, full(Phi))
+
+
+#: b (or its symmetric part) below this fraction of max(‖b‖, √(‖a‖‖c‖)) is rounding: counted as zero
+_B_ZERO = 1e-12
+#: a root with |Re λ| below this fraction of max(1, |λ|max) is on the imaginary axis
+_IMAGINARY = 1e-6
+
+
+def _state_matrix(a: np.ndarray, b: np.ndarray, c: np.ndarray) -> np.ndarray:
+    n = a.shape[0]
+    return np.block([[np.zeros((n, n)), np.eye(n)], [-np.linalg.solve(a, c), -np.linalg.solve(a, b)]])
+
+
+def _gyroscopic_modes(a: np.ndarray, b: np.ndarray, c: np.ndarray, full, coords) -> Modes:
+    """The modes of ``a s̈ + b ṡ + c s = 0`` with skew ``b`` (see :func:`normal_modes`)."""
+    n = a.shape[0]
+    try:
+        np.linalg.cholesky((a + a.T) / 2)
+        A = _state_matrix(a, b, c)
+    except np.linalg.LinAlgError as exc:
+        raise LagrangeError(f"the mass matrix at the reference is not positive definite: {exc}") from None
+    roots = _roots_deflated(A)
+    top = max(1.0, float(np.max(np.abs(roots))))
+    off = roots[np.abs(roots.real) > _IMAGINARY * top]
+    if off.size:
+        raise LagrangeError(f"unstable: the gyroscopic system has roots off the imaginary axis {off} (growing "
+                            "motion, no normal modes); characteristic_roots gives them all")
+    lam, vecs = np.linalg.eig(A)
+    order = np.argsort(lam.imag)[n:]  # the n roots of largest Im λ: +iω of each pair (one of a double 0)
+    omega = np.sort(np.abs(roots.imag))[1::2]  # one per ± pair, from the deflated (accurate) roots
+    omega = np.where(omega < 1e-12 * top, 0.0, omega)
+    pick = order[np.argsort(lam.imag[order])]
+    Phi = vecs[:n, pick].astype(complex)
+    for k in range(n):  # the largest component real and positive, then φᴴ a φ = 1
+        v = Phi[:, k]
+        big = v[np.argmax(np.abs(v))]
+        v = v * (abs(big) / big) if big != 0 else v
+        norm = np.sqrt(abs(np.real(np.conj(v) @ a @ v)))
+        Phi[:, k] = v / norm if norm > 0 else v
+    return Modes(omega, Phi, a, c, *coords, full(Phi), b, roots)
 
 
 def characteristic_roots(linear, params: Mapping | None = None, **kwargs) -> np.ndarray:

@@ -406,6 +406,15 @@ class NumericModel:
 
         return tape_of(eqs)
 
+    @staticmethod
+    def taylor_obstacle(eqs: Equations, values=None, y0=None, rates=None, horizon: float = 1.0, t0: float = 0.0):
+        """Why a Taylor-series method cannot be trusted on ``eqs`` with these parameter ``values`` from ``y0``
+        (:func:`lagrange.codegen.analyticity.obstacle`: a non-analytic function, a kink or a near-singularity),
+        or None."""
+        from .analyticity import obstacle
+
+        return obstacle(eqs, values, y0, rates, horizon, t0)
+
     def taylor_tape(self):
         """The Taylor tape of the equations (:func:`lagrange.codegen.tape.tape_of`; built once per Equations).
         Raises :class:`~lagrange.codegen.tape.TapeError` for constraints or a non-analytic function."""

@@ -10,7 +10,13 @@ bound cannot rule stiffness out (``benchmarks/auto_choice.py`` measures the deci
    constraints, constant or time-varying inputs, dense output) are considered; the Taylor method also needs
    analytic unconstrained equations and a tape interpreter (:func:`~lagrange.integrate.taylor_run.taylor_ready`),
    and the expanded equations (a structural system's are weighed only when at hand, in memory or in the on-disk
-   derivation cache: :meth:`lagrange.System.expanded_at_hand`; the run then uses them).
+   derivation cache: :meth:`lagrange.System.expanded_at_hand`; the run then uses them). It is excluded, with the
+   reason in the method line, when the equations hold a non-analytic or user function, a kink, or a
+   near-singularity at the run's parameter values — a regularization such as :math:`\sqrt{x^2+\varepsilon^2}` or
+   :math:`\tanh(v/\varepsilon)` with a small ε, which fools its step control
+   (:mod:`lagrange.codegen.analyticity`); the Jacobian is then also estimated at the real state nearest the
+   near-singularity (the *probe*: 2n + 1 more evaluations), and a problem stiff there (regularized friction
+   sticking: decay rate ~ friction/ε) is treated as stiff.
 2. **Stiffness estimate.** The Jacobian :math:`J = \partial f/\partial y` of the compiled right-hand side at
    the initial state by forward differences (:func:`difference_jacobian`: 2n + 1 evaluations; when the
    equations are not known to be analytic — no Taylor tape — each column is checked against a ``sign()``
@@ -45,7 +51,7 @@ from __future__ import annotations
 
 import math
 import time
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 from functools import lru_cache
 
 import numpy as np
@@ -285,7 +291,8 @@ class _Context:
 
 
 def choose(eqs, fun: Callable | None, t0: float, y0, *, t_end: float, rtol: float, backend: str,
-           needs: dict[str, str], projection: bool = False, taylor_equations=None) -> tuple[str, str]:
+           needs: dict[str, str], projection: bool = False, taylor_equations=None,
+           values: Mapping | None = None) -> tuple[str, str]:
     """The method for ``method="auto"`` and the reason (see the module docstring).
 
     Parameters
@@ -300,6 +307,9 @@ def choose(eqs, fun: Callable | None, t0: float, y0, *, t_end: float, rtol: floa
         (:meth:`lagrange.System.expanded_at_hand`): the Taylor tape is built from them. Without them a
         structural system is not offered the Taylor method (its tape needs the expanded equations, whose
         derivation grows about as n³) and the reason says so.
+    values : ``{symbol: number}`` of the run's parameters (``eqs.numeric_parameters``): near-singularities are
+        judged with them (:func:`lagrange.codegen.analyticity.obstacle`; without them only non-analytic
+        functions and kinks exclude the Taylor method)
 
     Raises
     ------
@@ -311,9 +321,17 @@ def choose(eqs, fun: Callable | None, t0: float, y0, *, t_end: float, rtol: floa
         registry.check_supported(registry.get("DOP853"), needs)
     ctx = _Context(eqs.n, abs(float(t_end) - float(t0)), float(rtol), backend, projection)
     structural = "taylor" in allowed and eqs.is_structural
-    taylor = _taylor_info(taylor_equations if structural else eqs, allowed, ctx)
+    blocked = _obstacle(taylor_equations if structural else eqs, allowed, fun, t0, y0, ctx, values)
+    taylor = None if blocked is not None else _taylor_info(taylor_equations if structural else eqs, allowed, ctx)
     unweighed = ("; the Taylor method is not weighed: this structural system's expanded equations are not derived "
                  "yet (System.expanded derives them)") if structural and taylor_equations is None else ""
+    if "varying_inputs" in needs:
+        unweighed = "; the Taylor method is excluded: time-varying inputs (their smoothness is unknown)"
+    if blocked is not None:
+        unweighed = f"; the Taylor method is excluded (it needs analytic equations): {blocked.describe()}"
+        probed = _stiff_at_probe(fun, t0, y0, blocked, allowed, ctx)
+        if probed is not None:
+            return probed[0], probed[1] + unweighed
     # analytic equations (their tape exists): no sign() jump to look for in the differences
     found = None if fun is None else difference_jacobian(fun, t0, y0, smooth=taylor is not None)
     estimate = ""
@@ -334,6 +352,40 @@ def choose(eqs, fun: Callable | None, t0: float, y0, *, t_end: float, rtol: floa
         return "taylor", f"smooth{estimate}: the Taylor method (order {taylor[0]}) {where}"
     name = _first(("DOP853", "RK45", "LSODA", "Radau"), allowed)
     return name, f"non-stiff{estimate}: {name}, the most efficient explicit method the request allows{unweighed}"
+
+
+def _obstacle(eqs, allowed, fun, t0, y0, ctx: _Context, values):
+    """What makes the Taylor method untrustworthy on ``eqs`` (:func:`lagrange.codegen.analyticity.obstacle`),
+    or None (also when it is not a candidate or its equations are not at hand)."""
+    if "taylor" not in allowed or eqs is None or eqs.is_structural or eqs.m or y0 is None:
+        return None
+    from ..codegen.numeric import NumericModel
+
+    rates = None
+    if fun is not None:
+        try:
+            rates = np.asarray(fun(float(t0), np.asarray(y0, dtype=float)), dtype=float)
+        except (LagrangeError, ArithmeticError, ValueError, TypeError):
+            rates = None
+    return NumericModel.taylor_obstacle(eqs, values, y0, rates, ctx.horizon, t0)
+
+
+def _stiff_at_probe(fun, t0, y0, blocked, allowed, ctx: _Context) -> tuple[str, str] | None:
+    """The stiff choice when the equations are stiff at the real state nearest a near-singularity (regularized
+    friction sticks there: decay rate ~ friction / ε), else None. 2n + 1 more evaluations."""
+    if fun is None or not blocked.probe:
+        return None
+    y = np.array(y0, dtype=float)
+    for i, v in blocked.probe:
+        y[i] = v
+    found = difference_jacobian(fun, t0, y, smooth=True)
+    if found is None or decay_bound(found[0]) * ctx.horizon <= STIFF_STEPS:
+        return None
+    stiffness = _eigen_estimate(*found)
+    if stiffness is None or not stiffness.is_stiff(ctx.horizon):
+        return None
+    name, why = _stiff_choice(stiffness, None, allowed, ctx)
+    return name, why.replace("stiff: ", "stiff at the near-singularity: ", 1)
 
 
 def _first(preferred: tuple[str, ...], allowed: tuple[str, ...]) -> str:

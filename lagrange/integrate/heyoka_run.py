@@ -37,6 +37,10 @@ def run(req: RunRequest) -> Trajectory:
     from .heyoka_backend import integrate_heyoka
 
     model, t_eval = constant_input_run(req, "method='heyoka' (its runtime parameters hold constants only)")
+    if not req.why:  # asked for by name (auto has already excluded the Taylor methods where this warns)
+        from .prepare import warn_untrusted
+
+        warn_untrusted("heyoka", req.equations, model, req.t_span, req.y0)
     try:
         return integrate_heyoka(model, req.t_span, req.y0, t_eval, rtol=req.rtol, atol=req.atol,
                                 max_step=req.max_step, label="heyoka (taylor_adaptive, LLVM)", events=req.events)

@@ -7,6 +7,7 @@ the compiled model (:class:`~lagrange.codegen.numeric.NumericModel`).
 from __future__ import annotations
 
 import math
+import warnings
 from collections.abc import Mapping, Sequence
 from functools import lru_cache
 
@@ -14,7 +15,15 @@ import numpy as np
 
 from ..codegen.numeric import NumericModel
 from ..conventions import VELOCITY_SUFFIX
-from ..errors import InitialConditionError, InputError, OptionError, ParameterError, SingularMassMatrixError
+from ..errors import (
+    InitialConditionError,
+    InputError,
+    LagrangeError,
+    NonAnalyticWarning,
+    OptionError,
+    ParameterError,
+    SingularMassMatrixError,
+)
 from ..model.coordinates import coordinate_name, is_coordinate
 
 __all__ = ["initial_state", "model_for", "check_initial_mass_matrix", "refuse_route", "constant_input_run",
@@ -191,3 +200,22 @@ def split_inputs(eqs, params: Mapping, inputs, t_span, y0) -> tuple[dict, dict, 
         return dict(params), {}, None
     constants, schedule = NumericModel.resolve_inputs(eqs, inputs, t_span, y0)
     return {**params, **constants}, constants, schedule
+
+
+def warn_untrusted(method: str, eqs, model: NumericModel, t_span, y0) -> None:
+    """Warn with :class:`~lagrange.errors.NonAnalyticWarning` when the Taylor-series ``method``, asked for by name,
+    runs equations with a kink or a near-singularity at the values bound to ``model``
+    (:meth:`NumericModel.taylor_obstacle`; the non-analytic functions the tape refuses with its own error)."""
+    t0, t1 = (float(v) for v in t_span)
+    y0 = np.asarray(y0, dtype=float)
+    try:
+        rates = np.asarray(model.fun(t0, y0), dtype=float)
+    except (LagrangeError, ArithmeticError, ValueError, TypeError):
+        rates = None
+    values = dict(zip(eqs.numeric_parameters, np.asarray(model.params, dtype=float)))
+    found = NumericModel.taylor_obstacle(eqs, values, y0, rates, t1 - t0, t0)
+    if found is not None and found.kind != "function":
+        warnings.warn(f"method={method!r} needs analytic equations, and these have {found.describe()}: its step "
+                      "control can step across the layer where the force changes and return a wrong answer; use "
+                      "method='DOP853' (or 'Radau' when stiff, or 'auto', which excludes the Taylor methods here)",
+                      NonAnalyticWarning, stacklevel=4)

@@ -228,7 +228,8 @@ def table() -> str:
     lines.insert(1, "  ".join("-" * w for w in widths))
     lines.append("")
     lines.append("auto: chosen among the methods that support the request (stiff: taylor when cheaper, else LSODA, "
-                 "Radau with projection; smooth: taylor; else DOP853).")
+                 "Radau with projection; smooth: taylor; else DOP853). Taylor only for analytic equations without a "
+                 "kink or a near-singularity (a small regularization parameter).")
     lines.append("Fixed-step (geometric) methods need step=h and a conservative, unconstrained system without "
                  "inputs.")
     lines += [f"  {m.name}: {m.summary}" for m in METHODS]

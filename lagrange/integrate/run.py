@@ -35,17 +35,23 @@ def choose_method(eqs, params=None, t_span=(0.0, 1.0), y0=None, rtol: float | No
     The Jacobian's eigenvalues are estimated by finite differences of the compiled right-hand side at ``y0``
     (with ``params``; no estimate without them); stiff problems get the Taylor method when its
     stability-limited cost is below an implicit method's, else LSODA; the rest the Taylor method (python
-    backend with the C tape interpreter, or rtol ≤ 1e-11) or DOP853. With ``events`` or ``varying_inputs``
-    only methods of the registry that support them.
+    backend with the C tape interpreter, or rtol ≤ 1e-11) or DOP853. The Taylor method only for analytic
+    equations with no near-singularity at the values of ``params`` (:mod:`lagrange.codegen.analyticity`).
+    With ``events`` or ``varying_inputs`` only methods of the registry that support them.
     """
     needs = _needs(eqs, [None] if events else [], [], _Varying() if varying_inputs else None)
-    fun = None
+    built = None
     if params is not None and y0 is not None:
         built = _decision_model(eqs, params, None, {}, None)
-        fun = None if built is None else built.fun
     from . import auto
-    return auto.choose(eqs, fun, float(t_span[0]), y0, t_end=float(t_span[1]),
-                       rtol=1e-9 if rtol is None else rtol, backend=backend or "python", needs=needs)
+    return auto.choose(eqs, None if built is None else built.fun, float(t_span[0]), y0, t_end=float(t_span[1]),
+                       rtol=1e-9 if rtol is None else rtol, backend=backend or "python", needs=needs,
+                       values=_values(eqs, built))
+
+
+def _values(eqs, model) -> dict | None:
+    """``{symbol: value}`` of the parameters bound to ``model`` (None without a model)."""
+    return None if model is None else dict(zip(eqs.numeric_parameters, np.asarray(model.params, dtype=float)))
 
 
 class _Varying:
@@ -209,7 +215,8 @@ def simulate(
         from . import auto
         name, why = auto.choose(eqs, None if decided is None else decided.fun, t0, y0, t_end=t1, rtol=rtol,
                                 backend=backend if model is None else model.backend, needs=needs,
-                                projection=bool(eqs.m) and st.method == "projection", taylor_equations=expanded)
+                                projection=bool(eqs.m) and st.method == "projection", taylor_equations=expanded,
+                                values=_values(eqs, decided))
         entry = registry.get(name)
         if eqs.is_structural and entry.family == "Taylor series":
             eqs = expanded  # the tape's equations: same coordinates, parameters, inputs and needs

@@ -40,6 +40,10 @@ def run(req: RunRequest) -> Trajectory:
     from .taylor import integrate_taylor, interpreter
 
     model, t_eval = constant_input_run(req, "method='taylor' (its tape holds constants only)")
+    if not req.why:  # asked for by name (auto has already excluded the Taylor methods where this warns)
+        from .prepare import warn_untrusted
+
+        warn_untrusted("taylor", req.equations, model, req.t_span, req.y0)
     how = "compiled series" if model.backend == "numba" else f"interpreted tape, {interpreter()}"
     label = f"taylor ({how}" + (f"; auto: {req.why})" if req.why else ")")
     try:
