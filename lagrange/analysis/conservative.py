@@ -20,8 +20,10 @@ Jacobi integral of the whole system is conserved (see :class:`~lagrange.derive.e
 from __future__ import annotations
 
 import itertools
+import random
 from collections.abc import Mapping, Sequence
 
+import mpmath
 import sympy as sp
 from sympy.core.function import AppliedUndef
 
@@ -29,7 +31,7 @@ from ..conventions import t
 from ..errors import AnalysisError, SymbolicTimeoutError
 from ..model.coordinates import coordinate_name, is_coordinate, position_symbol, to_symbols, velocity_symbol
 from ..safe_sympify import sympify as _sympify
-from ..simplification import _probe, is_zero, run_bounded
+from ..simplification import _probe, _sample, is_zero, run_bounded
 from ..simplification import simplify as _simplify
 
 __all__ = ["generalized_forces", "is_conservative", "nonconservative_pairs", "potential_of", "work_along"]
@@ -287,7 +289,7 @@ def work_along(F, coords: Sequence, path, over=None, position=None, rate=None):
     Q = _forces(F, coords, syms, position, velocities=True)
     vsyms = [velocity_symbol(q) for q in coords if is_coordinate(q)]
     moving = any(Qr.has(v) for Qr in Q for v in vsyms)
-    Q = tuple(_tidy(Qr) if moving else sp.expand(Qr) for Qr in Q)
+    Q = Q if moving else tuple(sp.expand(Qr) for Qr in Q)
     if moving and not all(is_coordinate(q) for q in coords):
         raise AnalysisError("a velocity-dependent force needs every coordinate as a coordinate function "
                             "(lagrange.coordinates), whose velocity is q.diff(t); plain symbols have none")
@@ -372,7 +374,7 @@ def _along(Q, syms, vel, seg, over, rate, what):
     if integrand.has(sp.nan, sp.zoo):
         raise AnalysisError(f"the force is undefined along {what} (0/0 where its tangent vanishes?): {integrand}")
     if rate is None and integrand.has(lam):
-        if _probe(sp.diff(integrand, lam)) is not False:
+        if not _numerically_zero(sp.diff(integrand, lam), [integrand]):
             raise AnalysisError("the work of this velocity-dependent force depends on how fast the path is run "
                                 "(it is not of degree 0 in the velocities, as dry friction is): give rate=ds/dt "
                                 "as a function of the path parameter")
@@ -438,10 +440,9 @@ def potential_of(F, coords: Sequence, position=None, reference: Mapping | None =
         more = f" (and {len(bad) - 1} more pair(s))" if len(bad) > 1 else ""
         raise AnalysisError(f"the force is not conservative: ∂Q[{_name(qi)}]/∂{_name(qj)} − ∂Q[{_name(qj)}]/∂"
                             f"{_name(qi)} = {curl} ≠ 0{more}, so Σ Q dq is not exact and no potential exists")
-    V = _construct(Q, coords, syms)
+    V = _tidy(_construct(Q, coords, syms))
     if reference is not None:
-        V = V - _value_at(V, reference, coords, syms)
-    V = _tidy(V)
+        V = _tidy(V - _value_at(V, reference, coords, syms))
     fn = {s: q for q, s in zip(coords, syms) if is_coordinate(q)}
     return V.xreplace(fn) if fn else V
 
@@ -481,11 +482,40 @@ def _construct(Q, coords, syms):
 
 
 def _vanishes(e) -> bool:
-    """Zero at random points (or proven zero): the construction moves on; the final check is :func:`_verify`."""
-    if e == 0:
+    """Zero after expansion or at random points (or proven zero): the construction moves on; the final check
+    is :func:`_verify`."""
+    if e == 0 or _expand(e) == 0:
         return True
-    probe = _probe(e)
-    return probe is False or (probe is None and is_zero(e))
+    numeric = _numerically_zero(e, sp.Add.make_args(e))
+    return numeric if numeric is not None else is_zero(e)
+
+
+def _numerically_zero(e, parts) -> bool | None:
+    """True when ``|e| ≤ 1e-20·(1 + Σ|parts|)`` at three random exact points (30-digit arithmetic), False when
+    it is larger at one, None when it cannot be evaluated (undefined functions, or undefined everywhere tried)."""
+    parts = list(parts)
+    if e.atoms(AppliedUndef, sp.Derivative):
+        probe = _probe(e)
+        return None if probe is None else not probe
+    symbols = sorted(set().union(e.free_symbols, *(p.free_symbols for p in parts)), key=sp.default_sort_key)
+    f = sp.lambdify(symbols, [e, *parts], modules="mpmath")
+    rnd = random.Random(1729)
+    good = 0
+    with mpmath.workdps(30):
+        for _ in range(12):
+            point = [_sample(v, rnd) for v in symbols]
+            try:
+                values = f(*(mpmath.mpf(v.p) / v.q for v in point))
+            except (ZeroDivisionError, ValueError, TypeError, OverflowError):
+                continue
+            if not all(mpmath.isfinite(v) for v in values):
+                continue
+            if abs(values[0]) > mpmath.mpf("1e-20") * (1 + sum(abs(v) for v in values[1:])):
+                return False
+            good += 1
+            if good == 3:
+                return True
+    return None
 
 
 def _antiderivative(e, s, q):
@@ -536,7 +566,7 @@ def _by_substitution(e, s):
         u = sp.Dummy("u", positive=True)
         g = sp.cancel(sp.Add(*group).xreplace({B: u}) / dB)
         if g.has(s):
-            if _probe(sp.diff(g, s)) is not False:
+            if not _numerically_zero(sp.diff(g, s), [g]):
                 continue
             g = _at_some_value(g, s)
             if g is None:
@@ -556,7 +586,7 @@ def _at_some_value(g, s):
     """``g`` (independent of ``s``) at a value of ``s`` where it is defined, or None."""
     for v in (sp.Rational(3, 7), sp.Rational(11, 13), sp.Rational(-5, 9), sp.S.Zero, sp.S.One):
         out = g.xreplace({s: v})
-        if not out.has(sp.zoo, sp.nan, sp.oo, -sp.oo) and _probe(out) is not None:
+        if not out.has(sp.zoo, sp.nan, sp.oo, -sp.oo) and _numerically_zero(sp.S.Zero, [out]) is not None:
             return out
     return None
 
@@ -564,14 +594,13 @@ def _at_some_value(g, s):
 def _verify(V, Q, coords, syms):
     """Raise unless ``∂V/∂q_r + Q_r`` vanishes at random points and is proven zero, for every r."""
     for r, s in enumerate(syms):
-        residual = sp.diff(V, s) + Q[r]
-        if residual == 0:
-            continue
-        if _probe(residual) is True:
+        dV = sp.diff(V, s)
+        residual = dV + Q[r]
+        if _numerically_zero(residual, [dV, Q[r]]) is False:
             raise AnalysisError(f"the potential found, {V}, does not reproduce Q[{_name(coords[r])}] = {Q[r]} "
                                 f"(−∂V/∂{_name(coords[r])} differs at random points: a piecewise or branch-cut "
                                 f"antiderivative?). {_NOT_FOUND}")
-        if not (is_zero(residual) or _zero_in_bases(residual)):
+        if not (_expand(residual) == 0 or _zero_in_bases(residual) or is_zero(residual)):
             raise AnalysisError(f"the candidate potential {V} reproduces Q[{_name(coords[r])}] at random points but "
                                 f"could not be proven to. {_NOT_FOUND}")
 
@@ -585,7 +614,8 @@ def _zero_in_bases(e) -> bool:
             kept.setdefault(p.base, sp.Dummy("u", positive=True))
     if not kept:
         return False
-    return is_zero(e.xreplace(kept))
+    e = e.xreplace(kept)
+    return _expand(e) == 0 or is_zero(e)
 
 
 def _tidy(e):
