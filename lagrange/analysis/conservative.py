@@ -494,7 +494,7 @@ def _numerically_zero(e, parts) -> bool | None:
     """True when ``|e| ≤ 1e-20·(1 + Σ|parts|)`` at three random exact points (30-digit arithmetic), False when
     it is larger at one, None when it cannot be evaluated (undefined functions, or undefined everywhere tried)."""
     parts = list(parts)
-    if e.atoms(AppliedUndef, sp.Derivative):
+    if any(x.atoms(AppliedUndef, sp.Derivative) for x in (e, *parts)):  # given functions: values of their own
         probe = _probe(e)
         return None if probe is None else not probe
     symbols = sorted(set().union(e.free_symbols, *(p.free_symbols for p in parts)), key=sp.default_sort_key)
