@@ -332,6 +332,14 @@ def _segment_work(Q, syms, vel, seg, over, rate, what):
         integrand = sp.expand(sum((Qr.xreplace(sub) * sp.diff(qr, s) for Qr, qr in zip(Q, seg)), sp.S.Zero))
     if integrand == 0:
         return sp.S.Zero
+    part, integrand = _by_substitution(integrand, s)  # terms g(B) dB/ds: G(B(s1)) − G(B(s0))
+    part = part.xreplace({s: s1}) - part.xreplace({s: s0}) if part != 0 else part
+    if _vanishes(integrand):
+        return part
+    return part + _definite(integrand, s, s0, s1)
+
+
+def _definite(integrand, s, s0, s1):
     numeric = not (integrand.free_symbols - {s} or _sympify(s0).free_symbols or _sympify(s1).free_symbols)
     seconds = _NUMERIC_INTEGRATE_SECONDS if numeric else _INTEGRATE_SECONDS  # quadrature is the fallback
     try:
@@ -498,7 +506,11 @@ def _numerically_zero(e, parts) -> bool | None:
         probe = _probe(e)
         return None if probe is None else not probe
     symbols = sorted(set().union(e.free_symbols, *(p.free_symbols for p in parts)), key=sp.default_sort_key)
-    f = sp.lambdify(symbols, [e, *parts], modules="mpmath")
+    try:
+        f = sp.lambdify(symbols, [e, *parts], modules="mpmath")
+    except (TypeError, ValueError, NameError, SyntaxError):  # a function mpmath lacks: the exact probe
+        probe = _probe(e)
+        return None if probe is None else not probe
     rnd = random.Random(1729)
     good = 0
     with mpmath.workdps(30):
@@ -506,7 +518,10 @@ def _numerically_zero(e, parts) -> bool | None:
             point = [_sample(v, rnd) for v in symbols]
             try:
                 values = f(*(mpmath.mpf(v.p) / v.q for v in point))
-            except (ZeroDivisionError, ValueError, TypeError, OverflowError):
+            except NameError:  # a function mpmath lacks (DiracDelta, …): the exact probe
+                probe = _probe(e)
+                return None if probe is None else not probe
+            except (ZeroDivisionError, ValueError, TypeError, OverflowError, AttributeError):
                 continue
             if not all(mpmath.isfinite(v) for v in values):
                 continue
@@ -545,7 +560,8 @@ def _expand(e):
 
 def _bases(e, s) -> list:
     """The bases ``B(s)`` of the powers in ``e`` with a non-integer or negative exponent, largest first."""
-    bases = {p.base for p in e.atoms(sp.Pow) if p.base.has(s) and not (p.exp.is_Integer and p.exp > 0)}
+    bases = {p.base for p in e.atoms(sp.Pow)
+             if p.base.has(s) and not p.base.is_Symbol and not (p.exp.is_Integer and p.exp > 0)}
     return sorted(bases, key=lambda b: (-sp.count_ops(b), sp.default_sort_key(b)))
 
 
@@ -563,7 +579,8 @@ def _by_substitution(e, s):
         dB = sp.diff(B, s)
         if not group or _vanishes(dB):
             continue
-        u = sp.Dummy("u", positive=True)
+        radicand = all(not p.exp.is_Integer for p in e.atoms(sp.Pow) if p.base == B)  # B ≥ 0 where e is real
+        u = sp.Dummy("u", positive=True) if radicand else sp.Dummy("u", real=True)
         g = sp.cancel(sp.Add(*group).xreplace({B: u}) / dB)
         if g.has(s):
             if not _numerically_zero(sp.diff(g, s), [g]):
