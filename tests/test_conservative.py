@@ -461,3 +461,11 @@ def test_velocity_dependent_forces_that_cannot_be_taken_are_refused():
         work_along([X.diff(t), 0], [X, y], [s, 0], over=(s, 0, 1))
     with pytest.raises(AnalysisError, match="velocities"):              # still no potential for such a force
         potential_of(DRY, [X, Y])
+
+
+def test_non_finite_components_and_a_bad_rate_are_named():
+    for bad in (sp.nan, sp.zoo, sp.oo * x):
+        with pytest.raises(AnalysisError, match="not finite"):
+            potential_of([bad, 0], [x, y])
+    with pytest.raises(AnalysisError, match="rate = .* must be one finite expression"):
+        work_along([-X.diff(t), 0], [X, Y], [s, s], over=(s, 0, 1), rate=[1, 2])

@@ -67,6 +67,10 @@ def _plain(e, coords, what: str, velocities: bool = False):
         e = _sympify(e) if not isinstance(e, sp.Basic) else e
     except (sp.SympifyError, TypeError) as exc:
         raise AnalysisError(f"{what} = {e!r} is not a sympy expression") from exc
+    if not isinstance(e, sp.Expr):
+        raise AnalysisError(f"{what} = {e!r} is not a scalar expression")
+    if e.has(sp.nan, sp.zoo, sp.oo, -sp.oo):
+        raise AnalysisError(f"{what} = {e} is not finite (it holds nan or an infinity)")
     fn_coords = [q for q in coords if is_coordinate(q)]
     derivs = e.atoms(sp.Derivative)
     if derivs and not velocities:
@@ -286,6 +290,13 @@ def work_along(F, coords: Sequence, path, over=None, position=None, rate=None):
     -2*pi*N*R*mu
     """
     coords, syms = _variables(coords)
+    if rate is not None:
+        try:
+            rate = _sympify(rate)
+        except (sp.SympifyError, TypeError) as exc:
+            raise AnalysisError(f"rate = {rate!r} is not an expression (ds/dt as a function of s)") from exc
+        if not isinstance(rate, sp.Expr) or rate.has(sp.nan, sp.zoo, sp.oo, -sp.oo):
+            raise AnalysisError(f"rate = {rate!r} must be one finite expression: ds/dt as a function of s")
     Q = _forces(F, coords, syms, position, velocities=True)
     vsyms = [velocity_symbol(q) for q in coords if is_coordinate(q)]
     moving = any(Qr.has(v) for Qr in Q for v in vsyms)
@@ -323,7 +334,7 @@ def _segment_work(Q, syms, vel, seg, over, rate, what):
     if not (isinstance(s, sp.Dummy) and s.is_real):  # the parameter runs over real values, whatever it assumes
         real = sp.Dummy(str(s), real=True)
         seg = [e.xreplace({s: real}) for e in seg]
-        rate = None if rate is None else _sympify(rate).xreplace({s: real})
+        rate = None if rate is None else rate.xreplace({s: real})
         s, over = real, (real, s0, s1)
     if vel:
         integrand = _along(Q, syms, vel, seg, over, rate, what)
@@ -369,13 +380,13 @@ def _along(Q, syms, vel, seg, over, rate, what):
     direction = _sympify(s1) - _sympify(s0)
     if direction.is_zero:
         return sp.S.Zero
-    sign = 1 if direction.is_positive else -1 if direction.is_negative else None
+    sign = 1 if direction.is_extended_positive else -1 if direction.is_extended_negative else None
     if sign is None:
-        raise AnalysisError(f"cannot tell whether {what} is run toward increasing or decreasing {s} "
-                            f"({s1} − {s0} has no known sign), and a velocity-dependent force depends on the "
-                            "direction of travel: give limits whose order is known (e.g. positive symbols)")
+        raise AnalysisError(f"cannot tell whether {what} is run toward increasing or decreasing values of its "
+                            f"parameter ({s1} − {s0} has no known sign), and a velocity-dependent force depends on "
+                            "the direction of travel: give limits whose order is known (e.g. positive symbols)")
     lam = sp.Dummy("sdot", positive=True)
-    speed = sign * lam if rate is None else _sympify(rate)
+    speed = sign * lam if rate is None else rate
     sub = dict(zip(syms, seg))
     sub.update({vel[q]: tc * speed for q, tc in zip(syms, tangent)})
     integrand = sum((Qr.xreplace(sub) * tc for Qr, tc in zip(Q, tangent)), sp.S.Zero)
@@ -499,7 +510,7 @@ def _vanishes(e) -> bool:
 
 
 def _numerically_zero(e, parts) -> bool | None:
-    """True when ``|e| ≤ 1e-20·(1 + Σ|parts|)`` at three random exact points (30-digit arithmetic), False when
+    """True when ``|e| ≤ 1e-20·(1 + Σ|parts|)`` at six random exact points (30-digit arithmetic), False when
     it is larger at one, None when it cannot be evaluated (undefined functions, or undefined everywhere tried)."""
     parts = list(parts)
     if any(x.atoms(AppliedUndef, sp.Derivative) for x in (e, *parts)):  # given functions: values of their own
@@ -528,7 +539,7 @@ def _numerically_zero(e, parts) -> bool | None:
             if abs(values[0]) > mpmath.mpf("1e-20") * (1 + sum(abs(v) for v in values[1:])):
                 return False
             good += 1
-            if good == 3:
+            if good == 6:
                 return True
     return None
 
@@ -538,7 +549,7 @@ def _antiderivative(e, s, q):
     part, rest = _by_substitution(e, s)
     if _vanishes(rest):
         return part
-    for form in (rest, _expand(rest)):
+    for form in dict.fromkeys((rest, _expand(rest))):  # as given, then expanded (when that differs)
         try:
             out = run_bounded(sp.integrate, form, s, what=f"the potential's integral in {s}",
                               seconds=_INTEGRATE_SECONDS)
