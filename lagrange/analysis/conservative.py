@@ -11,7 +11,13 @@ holds in any coordinates: a Cartesian field ``F`` acting on a point ``r(q)`` is 
 forces by virtual work, ``Q_r = F·∂r/∂q_r`` (Wells 4.10), pass ``position=r(q)``.
 
 Forces that depend on t are tested at a fixed instant (Wells 5.11): the potential then depends on t, and
-``T + V`` is no longer conserved. Forces that depend on velocities are not fields and are refused.
+``T + V`` is no longer conserved. Forces that depend on velocities are not fields: they have no potential and
+are refused by the classification, but their work along a parametrized path is defined once the velocity along
+it is (the path's tangent times the rate, :func:`work_along`); dry friction's does not depend on the rate.
+
+Integrals are taken in the field's natural variables before sympy's ``integrate`` is asked: a term
+``g(B) ∂B/∂q`` holding a power of an expression ``B`` (the square of a distance) is integrated in ``u = B``.
+Every potential returned has been verified (its gradient is the field, numerically and symbolically).
 
 This is a property of a force field. ``System.derived.is_conservative`` is a different thing: whether the
 Jacobi integral of the whole system is conserved (see :class:`~lagrange.derive.equations.Equations`).
@@ -20,10 +26,8 @@ Jacobi integral of the whole system is conserved (see :class:`~lagrange.derive.e
 from __future__ import annotations
 
 import itertools
-import random
 from collections.abc import Mapping, Sequence
 
-import mpmath
 import sympy as sp
 from sympy.core.function import AppliedUndef
 
@@ -31,8 +35,15 @@ from ..conventions import t
 from ..errors import AnalysisError, SymbolicTimeoutError
 from ..model.coordinates import coordinate_name, is_coordinate, position_symbol, to_symbols, velocity_symbol
 from ..safe_sympify import sympify as _sympify
-from ..simplification import _probe, _sample, is_zero, run_bounded
+from ..simplification import _probe, is_zero, run_bounded
 from ..simplification import simplify as _simplify
+from .natural_variables import (
+    expand_keeping_powers,
+    integrate_by_substitution,
+    numerically_zero,
+    vanishes,
+    zero_in_bases,
+)
 
 __all__ = ["generalized_forces", "is_conservative", "nonconservative_pairs", "potential_of", "work_along"]
 
@@ -162,7 +173,7 @@ def _curl_pairs(Q, coords, syms) -> tuple[list, AnalysisError | None]:
     """(the pairs proven asymmetric, the error naming the first pair that could not be decided, or None)."""
     bad, undecided = [], None
     for (i, qi), (j, qj) in itertools.combinations(enumerate(coords), 2):
-        curl = _expand(sp.diff(Q[i], syms[j]) - sp.diff(Q[j], syms[i]))
+        curl = expand_keeping_powers(sp.diff(Q[i], syms[j]) - sp.diff(Q[j], syms[i]))
         if curl == 0:
             continue
         if _probe(curl) is True:
@@ -343,9 +354,9 @@ def _segment_work(Q, syms, vel, seg, over, rate, what):
         integrand = sp.expand(sum((Qr.xreplace(sub) * sp.diff(qr, s) for Qr, qr in zip(Q, seg)), sp.S.Zero))
     if integrand == 0:
         return sp.S.Zero
-    part, integrand = _by_substitution(integrand, s)  # terms g(B) dB/ds: G(B(s1)) − G(B(s0))
+    part, integrand = integrate_by_substitution(integrand, s, _INTEGRATE_SECONDS)  # terms g(B) dB/ds: G(B) at the ends
     part = part.xreplace({s: s1}) - part.xreplace({s: s0}) if part != 0 else part
-    if _vanishes(integrand):
+    if vanishes(integrand):
         return part
     return part + _definite(integrand, s, s0, s1)
 
@@ -373,7 +384,7 @@ def _along(Q, syms, vel, seg, over, rate, what):
                             "frame) has no work along a path alone: the instant at each point is not given; "
                             "integrate the motion and take the power Σ Q q̇ over time instead")
     tangent = [sp.diff(qr, s) for qr in seg]
-    if all(_vanishes(tc) for tc in tangent):
+    if all(vanishes(tc) for tc in tangent):
         raise AnalysisError(f"{what} has no tangent (it does not move: dq/ds is 0 along it), so the velocity of "
                             "a velocity-dependent force such as dry friction −μN v/|v| is undefined there; remove "
                             "the repeated point or the constant piece of the path")
@@ -393,7 +404,7 @@ def _along(Q, syms, vel, seg, over, rate, what):
     if integrand.has(sp.nan, sp.zoo):
         raise AnalysisError(f"the force is undefined along {what} (0/0 where its tangent vanishes?): {integrand}")
     if rate is None and integrand.has(lam):
-        if not _numerically_zero(sp.diff(integrand, lam), [integrand]):
+        if not numerically_zero(sp.diff(integrand, lam), [integrand]):
             raise AnalysisError("the work of this velocity-dependent force depends on how fast the path is run "
                                 "(it is not of degree 0 in the velocities, as dry friction is): give rate=ds/dt "
                                 "as a function of the path parameter")
@@ -413,9 +424,9 @@ def potential_of(F, coords: Sequence, position=None, reference: Mapping | None =
     ``u = B`` when they are ``g(u) ∂B/∂q_r`` — so a central field ``f(d) d̂`` is integrated as ``f`` over ``d``
     in any coordinates — and only what is left goes to sympy's ``integrate``, unexpanded first.
 
-    The result is verified before it is returned: ``∂V/∂q_r + Q_r`` must vanish at random exact points (at 30
-    and 50 digits) and be proven zero symbolically (bounded expansion, the canonical trigonometric reduction,
-    simplification; powers of a common base are compared as powers of one symbol).
+    The result is verified before it is returned: ``∂V/∂q_r + Q_r`` must vanish at six random points (below
+    1e-20 of the terms' size in 30-digit arithmetic) and be proven zero symbolically (expansion; powers of a
+    common base compared as powers of one symbol; the bounded zero test of :mod:`lagrange.simplification`).
 
     Parameters
     ----------
@@ -493,63 +504,19 @@ def _construct(Q, coords, syms):
     V = sp.S.Zero
     for r, s in enumerate(syms):
         rest = -Q[r] - sp.diff(V, s)
-        if _vanishes(rest):
+        if vanishes(rest):
             continue
         V += _antiderivative(rest, s, coords[r])
     _verify(V, Q, coords, syms)
     return V
 
 
-def _vanishes(e) -> bool:
-    """Zero after expansion or at random points (or proven zero): the construction moves on; the final check
-    is :func:`_verify`."""
-    if e == 0 or _expand(e) == 0:
-        return True
-    numeric = _numerically_zero(e, sp.Add.make_args(e))
-    return numeric if numeric is not None else is_zero(e)
-
-
-def _numerically_zero(e, parts) -> bool | None:
-    """True when ``|e| ≤ 1e-20·(1 + Σ|parts|)`` at six random exact points (30-digit arithmetic), False when
-    it is larger at one, None when it cannot be evaluated (undefined functions, or undefined everywhere tried)."""
-    parts = list(parts)
-    if any(x.atoms(AppliedUndef, sp.Derivative) for x in (e, *parts)):  # given functions: values of their own
-        probe = _probe(e)
-        return None if probe is None else not probe
-    symbols = sorted(set().union(e.free_symbols, *(p.free_symbols for p in parts)), key=sp.default_sort_key)
-    try:
-        f = sp.lambdify(symbols, [e, *parts], modules="mpmath")
-    except (TypeError, ValueError, NameError, SyntaxError):  # a function mpmath lacks: the exact probe
-        probe = _probe(e)
-        return None if probe is None else not probe
-    rnd = random.Random(1729)
-    good = 0
-    with mpmath.workdps(30):
-        for _ in range(12):
-            point = [_sample(v, rnd) for v in symbols]
-            try:
-                values = f(*(mpmath.mpf(v.p) / v.q for v in point))
-            except NameError:  # a function mpmath lacks (DiracDelta, …): the exact probe
-                probe = _probe(e)
-                return None if probe is None else not probe
-            except (ZeroDivisionError, ValueError, TypeError, OverflowError, AttributeError):
-                continue
-            if not all(mpmath.isfinite(v) for v in values):
-                continue
-            if abs(values[0]) > mpmath.mpf("1e-20") * (1 + sum(abs(v) for v in values[1:])):
-                return False
-            good += 1
-            if good == 6:
-                return True
-    return None
-
-
 def _antiderivative(e, s, q):
-    """``∫ e ds``: in the natural variables first (:func:`_by_substitution`), then by sympy."""
-    part, rest = _by_substitution(e, s)
-    if _vanishes(rest):
+    """``∫ e ds``: in the natural variables first (:func:`integrate_by_substitution`), then by sympy."""
+    part, rest = integrate_by_substitution(e, s, _INTEGRATE_SECONDS)
+    if vanishes(rest):
         return part
-    for form in dict.fromkeys((rest, _expand(rest))):  # as given, then expanded (when that differs)
+    for form in dict.fromkeys((rest, expand_keeping_powers(rest))):  # as given, then expanded (when that differs)
         try:
             out = run_bounded(sp.integrate, form, s, what=f"the potential's integral in {s}",
                               seconds=_INTEGRATE_SECONDS)
@@ -562,88 +529,18 @@ def _antiderivative(e, s, q):
     raise AnalysisError(f"no closed form found for ∫ {rest} d{_name(q)}. {_NOT_FOUND}")
 
 
-def _expand(e):
-    """``expand``, keeping powers with non-integer or negative exponents whole (``B^{3/2}`` is not split into
-    ``B·√B`` and its base is not multiplied out, so the natural variable ``B`` stays visible)."""
-    kept = {p: sp.Dummy() for p in e.atoms(sp.Pow) if p.base.is_Add and not (p.exp.is_Integer and p.exp > 0)}
-    return sp.expand(e.xreplace(kept)).xreplace({v: k for k, v in kept.items()}) if kept else sp.expand(e)
-
-
-def _bases(e, s) -> list:
-    """The bases ``B(s)`` of the powers in ``e`` with a non-integer or negative exponent, largest first."""
-    bases = {p.base for p in e.atoms(sp.Pow)
-             if p.base.has(s) and not p.base.is_Symbol and not (p.exp.is_Integer and p.exp > 0)}
-    return sorted(bases, key=lambda b: (-sp.count_ops(b), sp.default_sort_key(b)))
-
-
-def _by_substitution(e, s):
-    r"""(∫ of the terms of ``e`` that are ``g(B) ∂B/∂s`` for a base ``B`` of theirs, the other terms).
-
-    Each group of terms holding ``B`` is divided by ``∂B/∂s`` with ``B`` replaced by a symbol ``u``; when the
-    quotient ``g`` does not depend on ``s`` (checked at random points), ``∫ g(u) du`` is taken and ``u = B``
-    put back. A quotient that only reduces to a function of ``u`` through identities such as
-    ``sin² + cos² = 1`` is evaluated at a value of ``s`` instead of being simplified."""
-    terms = list(sp.Add.make_args(_expand(e)))
-    part = sp.S.Zero
-    for B in _bases(e, s):
-        group = [term for term in terms if term.has(B)]
-        dB = sp.diff(B, s)
-        if not group or _vanishes(dB):
-            continue
-        radicand = all(not p.exp.is_Integer for p in e.atoms(sp.Pow) if p.base == B)  # B ≥ 0 where e is real
-        u = sp.Dummy("u", positive=True) if radicand else sp.Dummy("u", real=True)
-        g = sp.cancel(sp.Add(*group).xreplace({B: u}) / dB)
-        if g.has(s):
-            if not _numerically_zero(sp.diff(g, s), [g]):
-                continue
-            g = _at_some_value(g, s)
-            if g is None:
-                continue
-        try:
-            G = run_bounded(sp.integrate, g, u, what=f"the potential's integral in {B}", seconds=_INTEGRATE_SECONDS)
-        except SymbolicTimeoutError:
-            continue
-        if G.has(sp.Integral):
-            continue
-        part += G.xreplace({u: B})
-        terms = [term for term in terms if term not in group]
-    return part, sp.Add(*terms)
-
-
-def _at_some_value(g, s):
-    """``g`` (independent of ``s``) at a value of ``s`` where it is defined, or None."""
-    for v in (sp.Rational(3, 7), sp.Rational(11, 13), sp.Rational(-5, 9), sp.S.Zero, sp.S.One):
-        out = g.xreplace({s: v})
-        if not out.has(sp.zoo, sp.nan, sp.oo, -sp.oo) and _numerically_zero(sp.S.Zero, [out]) is not None:
-            return out
-    return None
-
-
 def _verify(V, Q, coords, syms):
     """Raise unless ``∂V/∂q_r + Q_r`` vanishes at random points and is proven zero, for every r."""
     for r, s in enumerate(syms):
         dV = sp.diff(V, s)
         residual = dV + Q[r]
-        if _numerically_zero(residual, [dV, Q[r]]) is False:
+        if numerically_zero(residual, [dV, Q[r]]) is False:
             raise AnalysisError(f"the potential found, {V}, does not reproduce Q[{_name(coords[r])}] = {Q[r]} "
                                 f"(−∂V/∂{_name(coords[r])} differs at random points: a piecewise or branch-cut "
                                 f"antiderivative?). {_NOT_FOUND}")
-        if not (_expand(residual) == 0 or _zero_in_bases(residual) or is_zero(residual)):
+        if not (expand_keeping_powers(residual) == 0 or zero_in_bases(residual) or is_zero(residual)):
             raise AnalysisError(f"the candidate potential {V} reproduces Q[{_name(coords[r])}] at random points but "
                                 f"could not be proven to. {_NOT_FOUND}")
-
-
-def _zero_in_bases(e) -> bool:
-    """Proven zero with every power ``B^p`` (non-integer or negative p) written ``u_B^p`` for a positive symbol
-    ``u_B``: an identity in more variables, hence also at ``u_B = B`` (sufficient, not necessary)."""
-    kept = {}
-    for p in e.atoms(sp.Pow):
-        if p.base.is_Add and not (p.exp.is_Integer and p.exp > 0) and p.base.free_symbols:
-            kept.setdefault(p.base, sp.Dummy("u", positive=True))
-    if not kept:
-        return False
-    e = e.xreplace(kept)
-    return _expand(e) == 0 or is_zero(e)
 
 
 def _tidy(e):
