@@ -241,6 +241,17 @@ def test_central_fields_in_cylindrical_coordinates():
     assert _numerically_equal(V, -2 * kk * lam * sp.log(rho), [rho, ph, zz])
 
 
+def test_central_fields_other_than_inverse_square():
+    """A Gaussian well −k d e^{−d²} and a 1/d field (potential ½k ln d²), on the pendulum bob off the axis:
+    the natural variable is the argument of the exponential or the logarithm's."""
+    q, bob, _, dist = _sphere_on_a_pendulum_bob((a_, 0, -h))
+    d = sp.Matrix(bob) - sp.Matrix([a_, 0, -h])
+    V = potential_of(list(-k * d * sp.exp(-d.dot(d))), q, position=bob)
+    assert _numerically_equal(V, -k * sp.exp(-dist**2) / 2)
+    V = potential_of(list(-k * d / d.dot(d)), q, position=bob)
+    assert _numerically_equal(V, k * sp.log(dist**2) / 2)
+
+
 def test_ex_5_6_charge_near_two_fixed_charges_in_polar_coordinates():
     """Wells Ex. 5.6: V = QQ1/(r² + s² + 2rs cosθ)^½ + QQ2/(r² + s² − 2rs cosθ)^½ (Q1 at −s, Q2 at +s)."""
     r, th = coordinates("r theta")

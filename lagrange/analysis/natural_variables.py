@@ -68,21 +68,26 @@ def numerically_zero(e, parts) -> bool | None:
 
 
 def expand_keeping_powers(e):
-    """``expand``, keeping powers with non-integer or negative exponents whole (``B^{3/2}`` is not split into
-    ``B·√B`` and its base is not multiplied out, so the natural variable ``B`` stays visible)."""
+    """``expand``, keeping powers with non-integer or negative exponents, exponentials and logarithms of sums
+    whole (``B^{3/2}`` is not split into ``B·√B``, ``exp(−B)`` not into a product, and ``B`` is not multiplied
+    out, so the natural variable ``B`` stays visible)."""
     kept = {p: sp.Dummy() for p in e.atoms(sp.Pow) if p.base.is_Add and not (p.exp.is_Integer and p.exp > 0)}
+    kept.update({f: sp.Dummy() for f in e.atoms(sp.exp, sp.log) if f.args[0].is_Add})  # exp(a + b) stays whole
     return sp.expand(e.xreplace(kept)).xreplace({v: k for k, v in kept.items()}) if kept else sp.expand(e)
 
 
 def _bases(e, s) -> list:
-    """The bases ``B(s)`` of the powers in ``e`` with a non-integer or negative exponent, largest first."""
+    """The bases ``B(s)`` of the powers in ``e`` with a non-integer or negative exponent, and the arguments of
+    its exponentials and logarithms, largest first."""
     bases = {p.base for p in e.atoms(sp.Pow)
              if p.base.has(s) and not p.base.is_Symbol and not (p.exp.is_Integer and p.exp > 0)}
+    bases |= {f.args[0] for f in e.atoms(sp.exp, sp.log) if f.args[0].has(s) and not f.args[0].is_Symbol}
     return sorted(bases, key=lambda b: (-sp.count_ops(b), sp.default_sort_key(b)))
 
 
 def integrate_by_substitution(e, s, seconds: float = 4.0):
-    r"""(∫ of the terms of ``e`` that are ``g(B) ∂B/∂s`` for a base ``B`` of theirs, the other terms).
+    r"""(∫ of the terms of ``e`` that are ``g(B) ∂B/∂s`` for a base ``B`` of theirs (or the argument of an
+    exponential or a logarithm), the other terms).
 
     Each group of terms holding ``B`` is divided by ``∂B/∂s`` with ``B`` replaced by a symbol ``u``; when the
     quotient ``g`` does not depend on ``s`` (checked at random points), ``∫ g(u) du`` is taken and ``u = B``
@@ -95,7 +100,8 @@ def integrate_by_substitution(e, s, seconds: float = 4.0):
         dB = sp.diff(B, s)
         if not group or vanishes(dB):
             continue
-        radicand = all(not p.exp.is_Integer for p in e.atoms(sp.Pow) if p.base == B)  # B ≥ 0 where e is real
+        exps = [p.exp for p in e.atoms(sp.Pow) if p.base == B]
+        radicand = bool(exps) and not any(x.is_Integer for x in exps)  # B ≥ 0 where e is real
         u = sp.Dummy("u", positive=True) if radicand else sp.Dummy("u", real=True)
         g = sp.cancel(sp.Add(*group).xreplace({B: u}) / dB)
         if g.has(s):
@@ -110,7 +116,7 @@ def integrate_by_substitution(e, s, seconds: float = 4.0):
             continue
         if G.has(sp.Integral):
             continue
-        part += G.xreplace({u: B})
+        part += sp.unpolarify(G).xreplace({u: B})
         terms = [term for term in terms if term not in group]
     return part, sp.Add(*terms)
 
