@@ -480,3 +480,19 @@ def test_non_finite_components_and_a_bad_rate_are_named():
             potential_of([bad, 0], [x, y])
     with pytest.raises(AnalysisError, match="rate = .* must be one finite expression"):
         work_along([-X.diff(t), 0], [X, Y], [s, s], over=(s, 0, 1), rate=[1, 2])
+
+
+def test_an_undecided_exactness_test_is_settled_by_a_verified_potential(monkeypatch):
+    """When the curl can be neither proven zero nor shown nonzero, a potential whose gradient is proven to be
+    the field decides 'conservative'; without one the answer is an error saying both, never a guess."""
+    from lagrange.analysis import conservative
+    monkeypatch.setattr(conservative, "_curl_pairs", lambda Q, c, s: ([], AnalysisError("cannot decide (forced)")))
+    q, bob, F, d = _sphere_on_a_pendulum_bob((a_, 0, -h))
+    assert is_conservative(F, q, position=bob)
+    assert _numerically_equal(potential_of(F, q, position=bob), -G * M * m / d)
+    monkeypatch.setattr(conservative, "_INTEGRATE_SECONDS", 0.25)  # keep the test fast
+    with pytest.raises(AnalysisError, match=r"cannot decide \(forced\), and no potential"):
+        is_conservative([sp.sin(x) / sp.log(x), 0], [x, y])
+    with pytest.raises(AnalysisError, match="could not be decided either") as err:
+        potential_of([sp.sin(x) / sp.log(x), 0], [x, y])
+    assert "passes the exactness test" not in str(err.value)

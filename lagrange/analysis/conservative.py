@@ -182,8 +182,7 @@ def _curl_pairs(Q, coords, syms) -> tuple[list, AnalysisError | None]:
         if not is_zero(curl) and undecided is None:
             undecided = AnalysisError(
                 f"cannot decide whether ∂Q[{_name(qi)}]/∂{_name(qj)} = ∂Q[{_name(qj)}]/∂{_name(qi)}: their "
-                f"difference {curl} vanishes at random points but could not be proven zero, and no potential "
-                "reproducing the field was found either")
+                f"difference {curl} could be neither proven zero nor shown nonzero at random points")
     return bad, undecided
 
 
@@ -227,8 +226,8 @@ def is_conservative(F, coords: Sequence, position=None) -> bool:
     if undecided is not None:  # a potential whose gradient is proven to be the field decides it
         try:
             _construct(Q, coords, syms)
-        except AnalysisError:
-            raise undecided from None
+        except AnalysisError as exc:
+            raise AnalysisError(f"{undecided}, and no potential reproducing the field was found ({exc})") from None
     return True
 
 
@@ -464,13 +463,20 @@ def potential_of(F, coords: Sequence, position=None, reference: Mapping | None =
     """
     coords, syms = _variables(coords)
     Q = _forces(F, coords, syms, position)
-    bad, _ = _curl_pairs(Q, coords, syms)
+    bad, undecided = _curl_pairs(Q, coords, syms)
     if bad:
         qi, qj, curl = bad[0]
         more = f" (and {len(bad) - 1} more pair(s))" if len(bad) > 1 else ""
         raise AnalysisError(f"the force is not conservative: ∂Q[{_name(qi)}]/∂{_name(qj)} − ∂Q[{_name(qj)}]/∂"
                             f"{_name(qi)} = {curl} ≠ 0{more}, so Σ Q dq is not exact and no potential exists")
-    V = _tidy(_construct(Q, coords, syms))
+    try:
+        V = _tidy(_construct(Q, coords, syms))
+    except AnalysisError as exc:
+        if undecided is None:
+            raise AnalysisError(f"{exc}. The field passes the exactness test (5.8), so a potential exists locally, "
+                                f"but no closed form was found and verified: {_TRY}") from None
+        raise AnalysisError(f"{exc}; whether the field is conservative could not be decided either ({undecided}): "
+                            f"{_TRY}") from None
     if reference is not None:
         V = _tidy(V - _value_at(V, reference, coords, syms))
     fn = {s: q for q, s in zip(coords, syms) if is_coordinate(q)}
@@ -492,11 +498,9 @@ def _value_at(V, reference, coords, syms):
     return V0
 
 
-_NOT_FOUND = ("The field passes the exactness test (5.8), so a potential exists locally, but no closed form "
-              "was found: try the field in other coordinates (Cartesian components with position=r(q) often "
-              "integrate where generalized forces do not), check that the same distance is written the same way "
-              "in every component, or take V numerically as the work to a reference configuration "
-              "(work_along with numeric parameters).")
+_TRY = ("try the field in other coordinates (Cartesian components with position=r(q) often integrate where "
+        "generalized forces do not), check that the same distance is written the same way in every component, or "
+        "take V numerically as the work to a reference configuration (work_along with numeric parameters)")
 
 
 def _construct(Q, coords, syms):
@@ -526,7 +530,7 @@ def _antiderivative(e, s, q):
             return part + out
         if rest.atoms(AppliedUndef):
             return part + out  # an arbitrary given function, ∫ f1(r) dr (Wells Prob. 5.1g): the integral is the answer
-    raise AnalysisError(f"no closed form found for ∫ {rest} d{_name(q)}. {_NOT_FOUND}")
+    raise AnalysisError(f"no closed form found for ∫ {rest} d{_name(q)}")
 
 
 def _verify(V, Q, coords, syms):
@@ -537,10 +541,10 @@ def _verify(V, Q, coords, syms):
         if numerically_zero(residual, [dV, Q[r]]) is False:
             raise AnalysisError(f"the potential found, {V}, does not reproduce Q[{_name(coords[r])}] = {Q[r]} "
                                 f"(−∂V/∂{_name(coords[r])} differs at random points: a piecewise or branch-cut "
-                                f"antiderivative?). {_NOT_FOUND}")
+                                "antiderivative?)")
         if not (expand_keeping_powers(residual) == 0 or zero_in_bases(residual) or is_zero(residual)):
             raise AnalysisError(f"the candidate potential {V} reproduces Q[{_name(coords[r])}] at random points but "
-                                f"could not be proven to. {_NOT_FOUND}")
+                                "could not be proven to")
 
 
 def _tidy(e):
