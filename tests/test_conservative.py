@@ -496,3 +496,15 @@ def test_an_undecided_exactness_test_is_settled_by_a_verified_potential(monkeypa
     with pytest.raises(AnalysisError, match="could not be decided either") as err:
         potential_of([sp.sin(x) / sp.log(x), 0], [x, y])
     assert "passes the exactness test" not in str(err.value)
+
+
+def test_cartesian_dry_friction_on_a_point_given_in_polar_coordinates():
+    """−μN v/|v| with v = d/dt (r cosθ, r sinθ), through position=: along the spiral r = 1 + s, θ = s
+    (0 ≤ s ≤ 1) the work is −μN × the arc length ∫₁² √(1 + u²) du = −μN(2√5 − √2 + asinh 2 − asinh 1)/2."""
+    r, th = coordinates("r theta")
+    pos = [r * sp.cos(th), r * sp.sin(th)]
+    v = [c.diff(t) for c in pos]
+    speed = sp.sqrt(v[0] ** 2 + v[1] ** 2)
+    W = work_along([-mu * N * c / speed for c in v], [r, th], [1 + s, s], over=(s, 0, 1), position=pos)
+    length = (2 * sp.sqrt(5) - sp.sqrt(2) + sp.asinh(2) - sp.asinh(1)) / 2
+    assert _numerically_equal(W, -mu * N * length)
