@@ -480,6 +480,10 @@ def test_non_finite_components_and_a_bad_rate_are_named():
             potential_of([bad, 0], [x, y])
     with pytest.raises(AnalysisError, match="rate = .* must be one finite expression"):
         work_along([-X.diff(t), 0], [X, Y], [s, s], over=(s, 0, 1), rate=[1, 2])
+    for wrong in (-1, 0, -(1 + s**2)):   # running the path backwards, or not at all
+        with pytest.raises(AnalysisError, match="does not run the path from s0 to s1"):
+            work_along([-X.diff(t), 0], [X, Y], [s, s], over=(s, 0, 1), rate=wrong)
+    assert is_zero(work_along([-X.diff(t), 0], [X, Y], [s, s], over=(s, 1, 0), rate=-3) + 3)  # −c v·dx, v = 3
 
 
 def test_an_undecided_exactness_test_is_settled_by_a_verified_potential(monkeypatch):

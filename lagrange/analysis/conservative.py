@@ -261,8 +261,8 @@ def work_along(F, coords: Sequence, path, over=None, position=None, rate=None):
     over : tuple, optional
         ``(s, s0, s1)``: the path parameter and its range, run from ``s0`` to ``s1``.
     rate : expression, optional
-        ``ṡ = ds/dt`` along the path (a function of ``s``; with a polygon, of each segment's 0-to-1 parameter).
-        Needed only by rate-dependent forces such as viscous drag.
+        ``ṡ = ds/dt`` along the path (a function of ``s``; with a polygon, of each segment's 0-to-1 parameter),
+        with the sign of ``s1 − s0``. Needed only by rate-dependent forces such as viscous drag.
 
     Returns
     -------
@@ -395,6 +395,11 @@ def _along(Q, syms, vel, seg, over, rate, what):
         raise AnalysisError(f"cannot tell whether {what} is run toward increasing or decreasing values of its "
                             f"parameter ({s1} − {s0} has no known sign), and a velocity-dependent force depends on "
                             "the direction of travel: give limits whose order is known (e.g. positive symbols)")
+    if rate is not None:
+        mid = rate.xreplace({s: (_sympify(s0) + _sympify(s1)) / 2}) if not direction.has(sp.oo, -sp.oo) else rate
+        if mid.is_zero or (mid.is_extended_negative and sign > 0) or (mid.is_extended_positive and sign < 0):
+            raise AnalysisError(f"rate = {rate} does not run {what} from s0 to s1 (ds/dt must have the sign of "
+                                "s1 − s0 and not vanish)")
     lam = sp.Dummy("sdot", positive=True)
     speed = sign * lam if rate is None else rate
     sub = dict(zip(syms, seg))
