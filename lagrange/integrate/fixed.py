@@ -17,13 +17,18 @@ from ..conventions import VELOCITY_SUFFIX
 from ..errors import IntegrationError, IntegrationInterrupted
 from ..model.coordinates import coordinate_name
 from ..results.trajectory import Trajectory
+from ..results.verdict import Check
 from .base import diverged, non_finite_state, not_converged, singular_jacobian, step_prefix
 from .composition import KahanLi6, McLachlan8, _Composition
 from .discrete_gradient import DiscreteGradient
 from .gauss_legendre import TABLEAUX, GaussLegendre4, GaussLegendre6, ImplicitMidpoint, _Gauss
 from .stormer_verlet import StormerVerlet
 
-__all__ = ["GEOMETRIC", "integrate_fixed", "fixed_loop", "run"]
+__all__ = ["GEOMETRIC", "integrate_fixed", "fixed_loop", "run", "step_doubling_check", "FIXED_RTOL", "FIXED_ATOL"]
+
+#: the accuracy a fixed-step run is checked against when ``rtol``/``atol`` are not given (its verdict,
+#: :func:`step_doubling_check`): 0.1 % of each component's range, absolute below 1e-6
+FIXED_RTOL, FIXED_ATOL = 1e-3, 1e-6
 
 #: why a step failed when M is not positive definite at one of its points (both loops)
 SINGULAR_MASS = ("the mass matrix is singular (or not positive definite) at a point of the step: a singular "
@@ -241,3 +246,58 @@ def _step_fault(cause: str, k: int, tk: float, T: np.ndarray, Y: np.ndarray, whe
         f"step {k + 1} of {steps} failed at t={tk:.9g} ({state}): {cause}. The trajectory up to "
         f"t={T[keep - 1]:.9g}{undefined} is in the error's `partial` attribute.",
         t=tk, state=dict(zip(model.equations.coordinates, Y[-1, :n])), partial=partial)
+
+
+def step_doubling_check(traj: Trajectory, *, method: str, step: float, t_span, y0, compiled: bool,
+                        rtol: float, atol: float) -> Check | None:
+    r"""Richardson's estimate of the global error of a fixed-step run, from a second run at twice the step.
+
+    The scheme of order :math:`p` runs again with ``round(steps/2)`` steps of :math:`h_2 \approx 2h`; at the
+    times both runs recorded (every common record, always the end)
+    :math:`e \approx |y_h - y_{h_2}| / ((h_2/h)^p - 1)`. The value checked is
+    :math:`\max_{i,t} e_i(t) / \max(\max_t|y_i|, atol/rtol)` — the relative global error of the worst
+    component — against ``rtol``. Cost: the second run, about half of the first. A second run that fails (its
+    Newton iteration, a non-finite state) fails the check: the step is near the scheme's limit. None when the
+    run had fewer than two steps.
+    """
+    t0, t1 = t_span
+    steps = max(1, int(round((t1 - t0) / step)))
+    if steps < 2 or len(traj.t) < 2:
+        return None
+    h = (t1 - t0) / steps
+    steps2 = steps // 2 if steps % 2 == 0 else (steps + 1) // 2
+    h2 = (t1 - t0) / steps2
+    idx = np.rint((traj.t - t0) / h).astype(np.int64)
+    stride = int(idx[1] - idx[0]) if len(idx) > 2 else steps
+    even = steps % 2 == 0
+    stride2 = (stride // 2 if stride % 2 == 0 else stride) if even else steps2
+    hm = traj.model.hamiltonian()
+    scheme = GEOMETRIC[method](hm)
+    where = (t0, np.asarray(y0, dtype=float), traj.model, f"{method} at step {h2:.3g} (accuracy check)", steps2)
+    advice = f"a smaller step than {h:.3g} (or a higher-order method: gl6)"
+    try:
+        run2 = _run_compiled if compiled else _run_python
+        T2, Y2, _ = run2(hm, scheme, t0, h2, steps2, max(1, stride2), np.asarray(y0, dtype=float), where)
+    except IntegrationError as exc:
+        return Check("step-doubling error", math.inf, float(rtol), False, advice,
+                     f"the run at step {h2:.3g} failed: {str(exc).split(': ', 1)[-1][:200]}")
+    except KeyboardInterrupt:  # Ctrl-C in the second run: the first is complete
+        raise IntegrationInterrupted(f"{traj.method} was interrupted (Ctrl-C) during its accuracy check; the "
+                                     "completed trajectory is in the exception's `partial` attribute.",
+                                     t=float(traj.t[-1]), partial=traj) from None
+    idx2 = np.rint((T2 - t0) / h2).astype(np.int64) * (2 if even else 0)
+    if even:
+        common, a, b = np.intersect1d(idx, idx2, return_indices=True)
+    else:
+        a, b = np.array([len(idx) - 1]), np.array([len(T2) - 1])
+    factor = (h2 / h) ** scheme.order - 1.0
+    e = np.abs(traj.y[a] - Y2[b]) / factor
+    floor = atol / rtol if rtol > 0 else atol
+    scale = np.maximum(np.max(np.abs(traj.y), axis=0), floor)
+    rel = e / scale
+    value = float(np.max(rel)) if rel.size else 0.0
+    if not math.isfinite(value):
+        value = math.inf
+    worst = traj.t[a][np.unravel_index(np.argmax(rel), rel.shape)[0]] if rel.size and math.isfinite(value) else t1
+    return Check.of("step-doubling error", value, rtol, advice,
+                    f"relative global error estimate of order {scheme.order}, worst at t={worst:.6g}")
