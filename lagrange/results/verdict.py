@@ -13,8 +13,8 @@ The checks and their limits (docs/guarantees.md, "Accuracy verdict"):
   (the energy drift of a conservative system) must stay below
   ``min(ENERGY_CAP, ENERGY_FACTOR × (rtol + atol / max|y|))``: a thousand times the local tolerance (global
   errors grow with the number of steps), and never more than 1 %.
-- **constraint drift** (constrained systems): the largest ``|φ|`` and ``|A q̇ + b|`` must stay below
-  ``CONSTRAINT_FACTOR × (atol + rtol × max|q|)`` (``max|q̇|`` for the velocity level).
+- **constraint drift** (constrained systems): the largest ``|φ|`` relative to ``max(max|q|, atol/rtol)`` (and
+  ``|A q̇ + b|`` relative to ``max|q̇|``) must stay below ``min(CONSTRAINT_CAP, CONSTRAINT_FACTOR × rtol)``.
 - **step-doubling error** (fixed-step methods, :mod:`lagrange.integrate.fixed`): Richardson's estimate of the
   global error against the requested ``rtol``/``atol``.
 - **Taylor local error** and **Taylor stability** (``method="taylor"``, :mod:`lagrange.integrate.taylor_checks`).
@@ -33,16 +33,18 @@ import numpy as np
 
 from ..records import record
 
-__all__ = ["Check", "Verdict", "RunStatus", "ENERGY_FACTOR", "ENERGY_CAP", "CONSTRAINT_FACTOR",
+__all__ = ["Check", "Verdict", "RunStatus", "ENERGY_FACTOR", "ENERGY_CAP", "CONSTRAINT_FACTOR", "CONSTRAINT_CAP",
            "energy_check", "constraint_checks", "tolerance_scale"]
 
 #: power balance: allowed relative residual per unit of local tolerance (global error grows with the steps)
 ENERGY_FACTOR = 1e3
 #: power balance: the relative residual above which no run is accurate, whatever its tolerance (1 %)
 ENERGY_CAP = 1e-2
-#: constraint drift: allowed violation per unit of local tolerance (projection holds it near rounding; Baumgarte
-#: keeps it at a few tolerances)
-CONSTRAINT_FACTOR = 1e3
+#: constraint drift: allowed relative violation per unit of rtol (projection holds it near rounding, Baumgarte
+#: below rtol; without stabilization it grows with time)
+CONSTRAINT_FACTOR = 1e2
+#: constraint drift: the relative violation above which no run is accurate, whatever its tolerance (1 %)
+CONSTRAINT_CAP = 1e-2
 
 
 class RunStatus(enum.Enum):
@@ -155,10 +157,13 @@ def constraint_checks(traj, rtol: float, atol: float) -> tuple[Check, ...]:
     n = traj.model.n
     out = []
     for level, cols in (("position", slice(0, n)), ("velocity", slice(n, 2 * n))):
-        scale = float(np.max(np.abs(traj.y[:, cols]))) if traj.y.size else 0.0
+        size = float(np.max(np.abs(traj.y[:, cols]))) if traj.y.size else 0.0
+        scale = max(size, atol / rtol) if math.isfinite(size) else math.inf
         worst = float(np.max(v[level])) if v[level].size else 0.0
-        allowed = CONSTRAINT_FACTOR * (atol + rtol * scale)
-        out.append(Check.of(f"constraint drift ({level})", worst if math.isfinite(worst) else math.inf, allowed,
+        value = worst / scale if math.isfinite(worst) and scale > 0 else (0.0 if worst == 0 else math.inf)
+        allowed = min(CONSTRAINT_CAP, CONSTRAINT_FACTOR * rtol)
+        out.append(Check.of(f"constraint drift ({level})", value, allowed,
                             "stabilization='projection', a tighter rtol, or a smaller step",
-                            "largest |phi|" if level == "position" else "largest |A q' + b|"))
+                            ("largest |phi|" if level == "position" else "largest |A q' + b|")
+                            + f" {worst:.3g} relative to max|{'q' if level == 'position' else 'dq/dt'}|"))
     return tuple(out)
