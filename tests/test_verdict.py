@@ -211,3 +211,17 @@ def test_cli_exits_4_on_a_run_that_fails_its_checks(tmp_path, capsys):
         status = main(["simulate", str(spec), "-q", "--method", "gl4", "--step", "0.0005"])
     out = capsys.readouterr().out
     assert status == 0 and "verdict: accurate" in out
+
+
+def test_fixed_step_run_with_explicit_time_has_no_energy_check_and_passes_quietly():
+    """A pendulum on a shaken support (L depends on t): the Jacobi integral changes by the work of the support,
+    which a fixed-step run does not integrate — no energy check; the step-doubling estimate still applies."""
+    th = coordinates("theta")
+    a, w = parameters("a Omega")
+    y = a * sp.cos(w * t) - l * sp.cos(th)
+    s = System([th], bodies=[Particle(m, (l * sp.sin(th), y))], V=m * g * y)
+    ic, p = {th: 0.4, th.diff(t): 0.1}, {"m": 1.3, "g": 9.81, "l": 0.7, "a": 0.05, "Omega": 11.0}
+    sol = _quiet(lambda: s.simulate(3.0, ic, p, method="gl4", step=0.01, n_points=101))
+    assert [c.name for c in sol.verdict.checks] == ["step-doubling error"]
+    ref = s.simulate(3.0, ic, p, rtol=1e-12, atol=1e-14, t_eval=[3.0])
+    assert abs(sol[th][-1] - ref[th][-1]) < 1e-6

@@ -1,7 +1,8 @@
 """The verdict of a finished run (:mod:`lagrange.results.verdict`): which checks apply to which method, computed
 once when :func:`~lagrange.integrate.run.simulate` hands back the trajectory.
 
-Every run: the power balance (energy drift) and, with constraints, the constraint drift, against the run's
+Every run: the power balance (energy drift; not for a fixed-step run of a system with explicit time, whose
+work integral is not integrated) and, with constraints, the constraint drift, against the run's
 ``rtol``/``atol``. Fixed-step methods: Richardson's step-doubling error estimate
 (:func:`lagrange.integrate.fixed.step_doubling_check`; skipped with ``StepOptions(h, estimate=False)``),
 against ``rtol``/``atol`` when given, else :data:`~lagrange.integrate.fixed.FIXED_RTOL` and
@@ -35,7 +36,10 @@ def assess(traj: Trajectory, req, entry, *, rtol: float | None, atol: float | No
         atol = FIXED_ATOL if atol is None else atol
     else:
         rtol, atol = req.rtol, req.atol
-    checks = [energy_check(traj, rtol, atol), *constraint_checks(traj, rtol, atol)]
+    # the Jacobi integral balances only with its work integral, or when nothing changes it (a fixed-step run of a
+    # system with explicit t integrates no work: no energy check there)
+    energy = traj.work is not None or traj.model.equations.is_conservative
+    checks = [*([energy_check(traj, rtol, atol)] if energy else []), *constraint_checks(traj, rtol, atol)]
     if entry.step_required and req.step.estimate:
         from .fixed import fixed_loop, step_doubling_check
 

@@ -122,7 +122,7 @@ def simulate(
         ``verlet`` (Störmer–Verlet, needs a constant mass matrix and V(q)) or ``dg`` (discrete gradient,
         energy conserved to the Newton tolerance) — with ``step=h``; see :mod:`lagrange.integrate.fixed`.
     rtol, atol : tolerances of the adaptive methods (default 1e-9 and 1e-11); for a fixed-step method the
-        accuracy its verdict checks (default ``FIXED_RTOL = 1e-3``, ``FIXED_ATOL = 1e-6`` of
+        accuracy its verdict checks (default ``FIXED_RTOL = 1e-2``, ``FIXED_ATOL = 1e-6`` of
         :mod:`lagrange.integrate.fixed`)
     t_eval : output times; default ``n_points`` equally spaced times (fixed-step methods record about
         ``n_points`` states instead)
