@@ -277,11 +277,17 @@ def restarter(model: NumericModel, *, rtol: float, atol: float, engine: str = "a
     order = taylor_order(rtol)
     p = np.ascontiguousarray(model.params, dtype=float)
     how = interpreter(engine, backend=model.backend)
-    none = np.empty(0)
+    none, floor = np.empty(0), float(atol) / rtol
+    lib = _c_library() if how == "c" else None  # (found and verified once, not per restart)
 
     def restart(t, z, t_end, max_step, max_steps):
-        _, t_new, z_new, *_ = _run(how, model, tape, float(t), float(t_end), np.ascontiguousarray(z, dtype=float),
-                                   p, float(atol) / rtol, order, float(max_step), none, int(max_steps))
+        z = np.ascontiguousarray(z, dtype=float)
+        if lib is not None:
+            _, t_new, z_new, _, _ = lib.run(tape, float(t), float(t_end), z, p, floor, order, float(max_step), none,
+                                            int(max_steps), np.empty((0, tape.nz)))
+        else:
+            _, t_new, z_new, *_ = _run(how, model, tape, float(t), float(t_end), z, p, floor, order,
+                                       float(max_step), none, int(max_steps))
         return float(t_new), np.asarray(z_new, dtype=float)
 
     return restart, order
