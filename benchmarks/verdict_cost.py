@@ -36,41 +36,41 @@ def _ms(f, repeats: int = 3) -> float:
     return 1e3 * best
 
 
+def _row(links: int) -> str:
+    s = n_link_pendulum(links)
+    ic = {**{q: 0.5 for q in s.coordinates}, **{q.diff(t): 0.0 for q in s.coordinates}}
+    sol = s.simulate(10, ic, {"g": 9.81}, method="taylor")
+    y0, te = sol.initial[1], np.linspace(0, 10, 1001)
+    run = _ms(lambda: integrate_taylor(sol.model, (0, 10), y0, te, rtol=1e-9, atol=1e-11))
+    fresh = dataclasses.replace(sol, model=s.compile({"g": 9.81}))
+    start = time.perf_counter()
+    energy_check(fresh, 1e-9, 1e-11)
+    cold = 1e3 * (time.perf_counter() - start)
+    warm = _ms(lambda: energy_check(sol, 1e-9, 1e-11))
+
+    def taylor():
+        restart, order = restarter(sol.model, rtol=1e-9, atol=1e-11)
+        taylor_checks(sol, restart, order, 1e-9, 1e-11)
+
+    tay = _ms(taylor)
+    dop = s.simulate(10, ic, {"g": 9.81})
+    dop_run = _ms(lambda: s.simulate(10, ic, {"g": 9.81}, model=dop.model))
+    gl = integrate_fixed(s, (0, 10), y0, {"g": 9.81}, method="gl4", step=0.01, model=sol.model)
+    gl_run = _ms(lambda: integrate_fixed(s, (0, 10), y0, {"g": 9.81}, method="gl4", step=0.01, model=sol.model), 1)
+    est = _ms(lambda: step_doubling_check(gl, method="gl4", step=0.01, t_span=(0, 10), y0=y0, compiled=False,
+                                          rtol=1e-2, atol=1e-6), 1)
+    return f"| {links} | {run:.1f} | {tay:.1f} | {dop_run:.1f} | {cold:.0f} | {warm:.2f} | {gl_run:.0f} | {est:.0f} |"
+
+
 def main() -> None:
     warnings.simplefilter("ignore")
-    rows = []
-    for links in (1, 3, 6):
-        s = n_link_pendulum(links)
-        ic = {**{q: 0.5 for q in s.coordinates}, **{q.diff(t): 0.0 for q in s.coordinates}}
-        sol = s.simulate(10, ic, {"g": 9.81}, method="taylor")
-        y0, te = sol.initial[1], np.linspace(0, 10, 1001)
-        run = _ms(lambda: integrate_taylor(sol.model, (0, 10), y0, te, rtol=1e-9, atol=1e-11))
-        fresh = dataclasses.replace(sol, model=s.compile({"g": 9.81}))
-        start = time.perf_counter()
-        energy_check(fresh, 1e-9, 1e-11)
-        cold = 1e3 * (time.perf_counter() - start)
-        warm = _ms(lambda: energy_check(sol, 1e-9, 1e-11))
-
-        def taylor():
-            restart, order = restarter(sol.model, rtol=1e-9, atol=1e-11)
-            taylor_checks(sol, restart, order, 1e-9, 1e-11)
-
-        tay = _ms(taylor)
-        dop = s.simulate(10, ic, {"g": 9.81})
-        dop_run = _ms(lambda: s.simulate(10, ic, {"g": 9.81}, model=dop.model))
-        gl = integrate_fixed(s, (0, 10), y0, {"g": 9.81}, method="gl4", step=0.01, model=sol.model)
-        gl_run = _ms(lambda: integrate_fixed(s, (0, 10), y0, {"g": 9.81}, method="gl4", step=0.01, model=sol.model),
-                     1)
-        est = _ms(lambda: step_doubling_check(gl, method="gl4", step=0.01, t_span=(0, 10), y0=y0, compiled=False,
-                                              rtol=1e-2, atol=1e-6), 1)
-        rows.append(f"| {links} | {run:.1f} | {tay:.1f} | {dop_run:.1f} | {cold:.0f} | {warm:.2f} | {gl_run:.0f} | "
-                    f"{est:.0f} |")
+    rows = [_row(links) for links in (1, 3, 6)]
     text = "\n".join([
         "# Cost of the accuracy verdict (`python benchmarks/verdict_cost.py`)",
         "",
         "n-link pendulum, t = 10, 1001 output points; milliseconds, best of 3 (fixed-step: one run).",
         "",
-        "| links | taylor run | Taylor checks | DOP853 run (model given) | energy check, diagnostics not built | "
+        "| links | taylor run | Taylor checks | DOP853 run with its checks (model given) | energy check, diagnostics not built | "
         "energy check, built | gl4 run (h = 0.01, python loop) | step-doubling estimate |",
         "|---|---|---|---|---|---|---|---|",
         *rows,
