@@ -70,8 +70,9 @@ def main() -> None:
         "",
         "n-link pendulum, t = 10, 1001 output points; milliseconds, best of 3 (fixed-step: one run).",
         "",
-        "| links | taylor run | Taylor checks | DOP853 run with its checks (model given) | energy check, diagnostics not built | "
-        "energy check, built | gl4 run (h = 0.01, python loop) | step-doubling estimate |",
+        "| links | taylor run | Taylor checks | DOP853 run with its checks (model given) | "
+        "energy check, diagnostics not built | energy check, built | gl4 run (h = 0.01, python loop) | "
+        "step-doubling estimate |",
         "|---|---|---|---|---|---|---|---|",
         *rows,
         "",

@@ -70,6 +70,13 @@ def test_resolved_gl4_passes_quietly_and_the_estimate_tracks_the_true_error():
     assert 0.5 < est / true < 2.0  # Richardson is asymptotically exact (the scales are 1 and w)
 
 
+def test_a_single_step_is_checked_against_two_half_steps():
+    s, x = spring()
+    sol = _flagged(lambda: s.simulate(1.0, {x: 1, x.diff(t): 0}, {"m": 1, "k": 100}, method="gl4", step=1.0),
+                   "step-doubling error")
+    assert abs(sol[x][-1] - np.cos(10.0)) > 0.5
+
+
 def test_fixed_step_checks_the_rtol_given_and_the_estimate_can_be_skipped():
     s, x = spring()
     ic, p = {x: 1, x.diff(t): 0}, {"m": 1, "k": 1e4}

@@ -43,10 +43,9 @@ def assess(traj: Trajectory, req, entry, *, rtol: float | None, atol: float | No
     if entry.step_required and req.step.estimate:
         from .fixed import fixed_loop, step_doubling_check
 
-        found = step_doubling_check(traj, method=entry.name, step=req.step.h, t_span=req.t_span, y0=req.y0,
-                                    compiled=fixed_loop(req.loop, backend=req.backend, model=req.model),
-                                    rtol=rtol, atol=atol)
-        checks += [found] if found is not None else []
+        checks.append(step_doubling_check(traj, method=entry.name, step=req.step.h, t_span=req.t_span, y0=req.y0,
+                                          compiled=fixed_loop(req.loop, backend=req.backend, model=req.model),
+                                          rtol=rtol, atol=atol))
     if entry.name == "taylor":
         from .taylor import restarter
         from .taylor_checks import taylor_checks
