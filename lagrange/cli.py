@@ -802,7 +802,7 @@ def _parser() -> argparse.ArgumentParser:
                        description="Integrate the equations of motion. The spec's [simulate] values (method, "
                        "rtol, …) are the defaults; the flags given override them. The run checks its own "
                        "accuracy (power balance, constraint drift, for fixed-step methods a step-doubling error "
-                       "estimate, for the Taylor method its local error and stability) and prints the verdict.",
+                       "estimate, for the Taylor method its local error) and prints the verdict.",
                        epilog="Exit status: 0 a run that passed its accuracy checks, 4 a run that reached its end "
                        "but failed them (the verdict names the check and what to try), 2 bad input, 3 internal "
                        "error, 130 interrupted.")

@@ -209,7 +209,7 @@ __all__ += ["ExpressionTooLarge"]
 
 class AccuracyWarning(LagrangeWarning):
     """A run reached its end but failed one of its own accuracy checks (power balance, constraint drift, the
-    fixed-step error estimate, the Taylor method's local error or stability; see
+    fixed-step error estimate, the Taylor method's local error; see
     :mod:`lagrange.results.verdict`): the message names the check, the number, the limit and what to try. The
     trajectory's ``success`` is False and its ``verdict`` holds every check."""
 

@@ -117,7 +117,7 @@ def test_taylor_on_a_nearly_nonanalytic_potential_is_flagged():
     assert abs(good[x][-1] - ref[x][-1]) < 1e-5 and abs(sol[x][-1] - ref[x][-1]) > 1
 
 
-# --- Taylor: stability of its steps -----------------------------------------------------------------------------
+# --- Taylor: the local error of its steps ----------------------------------------------------------------------
 def _friction_block():
     x = coordinates("x")
     v = x.diff(t)
@@ -125,14 +125,14 @@ def _friction_block():
 
 
 @pytest.mark.parametrize("rtol", [1e-6, 1e-9])
-def test_taylor_on_regularized_coulomb_sticking_is_flagged(rtol):
-    """A block that sticks under regularized Coulomb friction (tanh(v/ε), ε = 1e-3): at rest the friction is a
-    stiff mode (rate μg/ε = 300) the coefficients do not see; the Taylor steps amplify it and the block creeps to
-    the wrong rest position with a clean power balance. The stability check flags it; Radau passes quietly and
+def test_taylor_on_regularized_coulomb_stick_slip_is_flagged(rtol):
+    """A block that sticks under regularized Coulomb friction (tanh(v/ε), ε = 1e-3): where the velocity turns,
+    tanh(v/ε) has a radius of convergence of order ε/|v̇| that the Taylor steps reach past, and the block ends at
+    the wrong rest position with a clean power balance. The local-error check flags it; Radau passes quietly and
     agrees with a tighter Radau run."""
     s, x = _friction_block()
     ic, p = {x: 1.0, x.diff(t): 0}, {"m": 1, "k": 1, "mu": 0.3, "g": 1, "eps": 1e-3}
-    sol = _flagged(lambda: s.simulate(20, ic, p, method="taylor", rtol=rtol), "Taylor stability")
+    sol = _flagged(lambda: s.simulate(20, ic, p, method="taylor", rtol=rtol), "Taylor local error")
     assert {c.name: c for c in sol.verdict.checks}["power balance"].passed  # the energy cannot tell
     ref = s.simulate(20, ic, p, method="Radau", rtol=1e-11, atol=1e-13, t_eval=[20.0])
     assert abs(sol[x][-1] - ref[x][-1]) > 0.05
@@ -140,11 +140,24 @@ def test_taylor_on_regularized_coulomb_sticking_is_flagged(rtol):
     assert abs(good[x][-1] - ref[x][-1]) < 1e3 * rtol
 
 
+@pytest.mark.parametrize("c", [10.0, 1000.0])
+def test_taylor_on_a_stiff_damped_oscillator_passes_quietly(c):
+    """Strong linear damping (decay rate up to 1000): the Taylor steps go past the stability limit of the
+    stiff mode at rest, which the step rule holds at the tolerance — accurate, and not flagged."""
+    x = coordinates("x")
+    s = System([x], T=m * x.diff(t) ** 2 / 2, V=k * x**2 / 2, rayleigh=eps * x.diff(t) ** 2 / 2)
+    sol = _quiet(lambda: s.simulate(10, {x: 1.0, x.diff(t): 0.0}, {"m": 1, "k": 1, "eps": c}, method="taylor"))
+    r = np.roots([1.0, c, 1.0])  # overdamped: x = A e^{r1 t} + B e^{r2 t}, x(0) = 1, x'(0) = 0
+    A = -r[1] / (r[0] - r[1])
+    exact = A * np.exp(r[0] * sol.t) + (1 - A) * np.exp(r[1] * sol.t)
+    assert np.max(np.abs(sol[x] - exact)) < 1e-7
+
+
 def test_taylor_on_an_analytic_pendulum_passes_quietly():
     s, th = pendulum()
     sol = _quiet(lambda: s.simulate(20, {th: 2.5, th.diff(t): 0}, PEND, method="taylor"))
     names = [c.name for c in sol.verdict.checks]
-    assert names == ["energy drift", "Taylor local error", "Taylor stability"]
+    assert names == ["energy drift", "Taylor local error"]
     ref = s.simulate(20, {th: 2.5, th.diff(t): 0}, PEND, method="DOP853", rtol=1e-12, atol=1e-14, t_eval=[20.0])
     assert abs(sol[th][-1] - ref[th][-1]) < 1e-6
 

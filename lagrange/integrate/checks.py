@@ -6,7 +6,7 @@ work integral is not integrated) and, with constraints, the constraint drift, ag
 ``rtol``/``atol``. Fixed-step methods: Richardson's step-doubling error estimate
 (:func:`lagrange.integrate.fixed.step_doubling_check`; skipped with ``StepOptions(h, estimate=False)``),
 against ``rtol``/``atol`` when given, else :data:`~lagrange.integrate.fixed.FIXED_RTOL` and
-:data:`~lagrange.integrate.fixed.FIXED_ATOL`. ``method="taylor"``: the local error and stability of its steps
+:data:`~lagrange.integrate.fixed.FIXED_ATOL`. ``method="taylor"``: the local error of its steps
 (:mod:`lagrange.integrate.taylor_checks`). A failed check makes ``success`` False and warns once with
 :class:`~lagrange.errors.AccuracyWarning`.
 """

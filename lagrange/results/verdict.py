@@ -17,7 +17,8 @@ The checks and their limits (docs/guarantees.md, "Accuracy verdict"):
   ``|A q̇ + b|`` relative to ``max|q̇|``) must stay below ``min(CONSTRAINT_CAP, CONSTRAINT_FACTOR × rtol)``.
 - **step-doubling error** (fixed-step methods, :mod:`lagrange.integrate.fixed`): Richardson's estimate of the
   global error against the requested ``rtol``/``atol``.
-- **Taylor local error** and **Taylor stability** (``method="taylor"``, :mod:`lagrange.integrate.taylor_checks`).
+- **Taylor local error** (``method="taylor"``, :mod:`lagrange.integrate.taylor_checks`): one step against two
+  half steps from sampled states, against the local tolerance.
 
 The limits are named constants with their reason; the tests in tests/test_verdict.py hold both sides of each
 (runs that must pass quietly, runs that must be flagged).
