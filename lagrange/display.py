@@ -54,8 +54,8 @@ def html_table(rows: Iterable[Iterable], *, header: Iterable | None = None, capt
 
 def trajectory_summary(traj) -> list[tuple[str, str]]:
     """(label, value) rows describing a trajectory: system, coordinates, method, time span, points, status,
-    right-hand-side evaluations, each check of its verdict, energy (power-balance) error and, with constraints, the constraint names
-    and the largest violation."""
+    right-hand-side evaluations, each check of its verdict, energy (power-balance) error and, with constraints,
+    the constraint names and the largest violation."""
     eqs = traj.model.equations
     rows = [("system", eqs.name or "(unnamed)"),
             ("coordinates", ", ".join(coordinate_name(c) for c in traj.coordinates)),
