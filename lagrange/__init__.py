@@ -85,8 +85,8 @@ _EXPORTS: dict[str, str] = {
     "LagrangeWarning": ".errors",
     "UnusedParameterWarning": ".errors",
     "ConventionChangeWarning": ".errors",
-
     "NonAnalyticWarning": ".errors",
+    "AccuracyWarning": ".errors",
     "CacheError": ".errors",
     "CacheIntegrityWarning": ".errors",
     "MethodError": ".errors",
@@ -211,8 +211,8 @@ __all__ = [
     "LagrangeWarning",
     "UnusedParameterWarning",
     "ConventionChangeWarning",
-
     "NonAnalyticWarning",
+    "AccuracyWarning",
     "CacheError",
     "CacheIntegrityWarning",
     "is_conservative",

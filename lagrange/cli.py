@@ -1,6 +1,7 @@
 """The ``lagrange`` command line: parses arguments and calls the library (no logic of its own).
 
-Errors are one line on stderr and a non-zero exit (2 for bad input, 3 for an internal failure, 130 after
+Errors are one line on stderr and a non-zero exit (2 for bad input, 3 for an internal failure, 4 for a
+simulation that reached its end but failed its own accuracy checks (:mod:`lagrange.results.verdict`), 130 after
 Ctrl-C: ``simulate --csv`` then writes the trajectory computed up to the interrupt);
 set ``LAGRANGE_DEBUG=1`` to see tracebacks. A closed pipe (``lagrange simulate ex3.4 | head -2``) ends the
 command quietly. Nothing heavy is imported before the arguments are parsed (``lagrange --help`` and
@@ -267,7 +268,19 @@ def _simulate(args) -> int:
     label_e = "energy drift" if sol.work is None else "power-balance residual"
     print(f"{label_e} (relative): {sol.energy_error():.3e}")
     _outputs(args, spec, sol)
-    return 0
+    return _verdict_status(sol)
+
+
+#: the exit status of a run that reached its end but failed its own accuracy checks (lagrange.results.verdict)
+INACCURATE_EXIT = 4
+
+
+def _verdict_status(sol) -> int:
+    """Print the run's verdict; the exit status: 0, or :data:`INACCURATE_EXIT` when a check failed."""
+    if sol.verdict is None:
+        return 0
+    print(sol.verdict)
+    return 0 if sol.verdict.ok else INACCURATE_EXIT
 
 
 @contextmanager
@@ -360,7 +373,7 @@ def _greenspan_rigid(args, spec, t_end: float, params: dict, initial: dict, opti
         animate(spec.system, sol, args.animate, links=[(0, 1), (0, 2), (0, 3), (1, 2), (2, 3), (3, 1)],
                 title=spec.label)
         print(f"animation written to {args.animate}")
-    return 0
+    return _verdict_status(sol)
 
 
 def _greenspan_example(spec: str):
@@ -461,6 +474,9 @@ def _cmd_sweep(args) -> int:
         else:
             table.to_csv(args.out, index=False)
         print(f"table written to {args.out}")
+    if "success" in table and bool(((table["status"] == "ok") & (table["success"] == False)).any()):  # noqa: E712
+        print("some runs reached their end but failed their own accuracy checks (success False)")
+        return INACCURATE_EXIT
     return 0
 
 
@@ -784,7 +800,12 @@ def _parser() -> argparse.ArgumentParser:
 
     p = sub.add_parser("simulate", parents=[quiet], help="integrate the equations of motion",
                        description="Integrate the equations of motion. The spec's [simulate] values (method, "
-                       "rtol, …) are the defaults; the flags given override them.")
+                       "rtol, …) are the defaults; the flags given override them. The run checks its own "
+                       "accuracy (power balance, constraint drift, for fixed-step methods a step-doubling error "
+                       "estimate, for the Taylor method its local error) and prints the verdict.",
+                       epilog="Exit status: 0 a run that passed its accuracy checks, 4 a run that reached its end "
+                       "but failed them (the verdict names the check and what to try), 2 bad input, 3 internal "
+                       "error, 130 interrupted.")
     p.add_argument("spec", nargs="?", help=spec_help + "; or greenspan-N (Greenspan's top, example N = 1 … 14)")
     p.add_argument("--list-methods", action="store_true", help="print the method registry (as `lagrange methods`) "
                    "and exit")
@@ -814,7 +835,9 @@ def _parser() -> argparse.ArgumentParser:
     p.set_defaults(func=_cmd_hamiltonian)
 
     p = sub.add_parser("sweep", parents=[quiet],
-                       help="run a grid or random sample of parameters/initial values, tabulate results")
+                       help="run a grid or random sample of parameters/initial values, tabulate results",
+                       epilog="Exit status: 4 when a run reached its end but failed its own accuracy checks "
+                       "(its success column is False), 2 bad input, 0 otherwise.")
     p.add_argument("spec", help=spec_help + "; or greenspan (the top's stability map over V and alpha_deg)")
     p.add_argument("--over", action="append", required=True, metavar="NAME=START:STOP:NUM",
                    help="a swept quantity (parameter, input, coordinate, q_dot) and its values (or NAME=a,b,c)")
@@ -876,7 +899,8 @@ def _printable(value) -> str:
 
 def main(argv: list[str] | None = None) -> int:
     """Run the ``lagrange`` command; returns the exit status (0 ok, 1 a check failed, 2 bad input,
-    3 internal error, 130 interrupted by Ctrl-C, 141 the output pipe was closed)."""
+    3 internal error, 4 a simulation that failed its own accuracy checks, 130 interrupted by Ctrl-C, 141 the
+    output pipe was closed)."""
     try:
         args = _parser().parse_args(argv)
         _check_outputs(args)

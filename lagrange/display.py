@@ -54,16 +54,18 @@ def html_table(rows: Iterable[Iterable], *, header: Iterable | None = None, capt
 
 def trajectory_summary(traj) -> list[tuple[str, str]]:
     """(label, value) rows describing a trajectory: system, coordinates, method, time span, points, status,
-    right-hand-side evaluations, energy (power-balance) error and, with constraints, the constraint names
-    and the largest violation."""
+    right-hand-side evaluations, each check of its verdict, energy (power-balance) error and, with constraints,
+    the constraint names and the largest violation."""
     eqs = traj.model.equations
     rows = [("system", eqs.name or "(unnamed)"),
             ("coordinates", ", ".join(coordinate_name(c) for c in traj.coordinates)),
             ("method", traj.method),
             ("time span", f"[{traj.t[0]:.6g}, {traj.t[-1]:.6g}]" if len(traj.t) else "(no points)"),
             ("points", str(len(traj.t))),
-            ("status", ("ok" if traj.success else "FAILED") + (f": {traj.message}" if traj.message else "")),
+            ("status", _status_text(traj)),
             ("rhs evaluations", str(traj.nfev))]
+    if traj.verdict is not None:
+        rows.extend((f"check: {c.name}", str(c).split(": ", 1)[1]) for c in traj.verdict.checks)
     if len(traj.t):
         label = "energy drift (relative)" if traj.work is None else "power-balance residual (relative)"
         try:
@@ -75,6 +77,14 @@ def trajectory_summary(traj) -> list[tuple[str, str]]:
         if len(traj.t):
             rows.append(("max constraint violation", f"{traj.max_constraint_violation():.3e}"))
     return rows
+
+
+def _status_text(traj) -> str:
+    """``ok``, ``INACCURATE`` (a check of the verdict failed) or ``FAILED``, with the run's message."""
+    from .results.verdict import RunStatus
+
+    word = {RunStatus.SUCCESS: "ok", RunStatus.INACCURATE: "INACCURATE", RunStatus.STOPPED: "FAILED"}[traj.status]
+    return word + (f": {traj.message}" if traj.message else "")
 
 
 def trajectory_html(traj) -> str:

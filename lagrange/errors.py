@@ -224,3 +224,13 @@ class NonAnalyticWarning(LagrangeWarning):
 
 
 __all__ += ["NonAnalyticWarning"]
+
+
+class AccuracyWarning(LagrangeWarning):
+    """A run reached its end but failed one of its own accuracy checks (power balance, constraint drift, the
+    fixed-step error estimate, the Taylor method's local error; see
+    :mod:`lagrange.results.verdict`): the message names the check, the number, the limit and what to try. The
+    trajectory's ``success`` is False and its ``verdict`` holds every check."""
+
+
+__all__ += ["AccuracyWarning"]

@@ -22,7 +22,9 @@ printing too.
 
 from __future__ import annotations
 
+import builtins
 import importlib.util
+import inspect
 import math
 import weakref
 from collections.abc import Callable, Mapping
@@ -614,18 +616,51 @@ def _reference_functions(eqs: Equations):
 
 
 def _aux_function(eqs: Equations):
+    """The diagnostics ``aux(t, cols, p, λ) -> [T, V, h, dh/dt, T2, T0]``, vectorized over the columns: a numpy
+    lambdify whose generated source (``inspect.getsource``) is kept in the derivation cache like the
+    right-hand side's, so a later model of the same equations execs it (no printing, no lambdify) — every run's
+    verdict checks the energy. Kept only when every name the source uses is numpy's or a builtin, as lambdify's
+    namespace gives it (else lambdify each time)."""
+    from .derivation_cache import cached_code, cached_source
+
+    def generate() -> str:
+        f = _aux_lambdify(eqs)
+        plain = all(f.__globals__.get(n, getattr(builtins, n, None)) is getattr(np, n, getattr(builtins, n, None))
+                    for n in _names(f.__code__))
+        return inspect.getsource(f) if plain else ""
+
+    source = cached_source(eqs, "diagnostics T, V, h, dh/dt, T2, T0 (numpy lambdify, cse)", generate)
+    if not source:
+        f = _aux_lambdify(eqs)
+    else:
+        code = cached_code(source, "<lagrange diagnostics>")
+        namespace = {n: getattr(np, n) for n in _names(code) if hasattr(np, n)}
+        exec(code, namespace)  # noqa: S102 - lambdify's own text, numpy names only
+        f = namespace["_lambdifygenerated"]
+
+    def aux(t_, cols, p, lam):
+        return f(t_, cols, list(p), list(lam))
+
+    return aux
+
+
+def _names(code) -> set[str]:
+    """Every global name a code object (and the code objects it holds) looks up."""
+    out = set(code.co_names)
+    for const in code.co_consts:
+        if inspect.iscode(const):
+            out |= _names(const)
+    return out
+
+
+def _aux_lambdify(eqs: Equations):
     from .cse import numeric_arguments, rename_map  # (here: not on a warm re-run's path)
 
     ren = rename_map(eqs)
     tt, ys, ps = numeric_arguments(eqs)
     T, h, T2, T0 = eqs.energy_parts()
     exprs = [sp.sympify(e).xreplace(ren) for e in (T, eqs.potential, h, eqs.jacobi_rate, T2, T0)]
-    f = sp.lambdify((tt, ys, ps, list(eqs.multipliers)), exprs, modules="numpy", cse=True)
-
-    def aux(t_, cols, p, lam):
-        return f(t_, cols, list(p), list(lam))
-
-    return aux
+    return sp.lambdify((tt, ys, ps, list(eqs.multipliers)), exprs, modules="numpy", cse=True)
 
 
 def lam_required(eqs: Equations) -> bool:

@@ -259,7 +259,8 @@ def _run_diagnostics(system, pm, params, initial, t_run, states) -> BalanceDiagn
     free_p, free_b = _external(pm, states)
     drift = [float(np.max(np.abs(a - a[0]))) / max(max(sc), 1e-300) if free else None
              for a, sc, free in ((p, ps, free_p), (b, bs, free_b))]
-    note = "" if sol.success else f"run stopped at t={sol.t[-1]:.4g}: {sol.message}"
+    note = ("" if sol.success else f"the run failed its accuracy checks: {sol.verdict.summary()}"
+            if sol.verdict is not None and not sol.verdict.ok else f"run stopped at t={sol.t[-1]:.4g}: {sol.message}")
     return BalanceDiagnostics(float(sol.t[-1]), power, drift[0], drift[1], note)
 
 

@@ -17,13 +17,19 @@ from ..conventions import VELOCITY_SUFFIX
 from ..errors import IntegrationError, IntegrationInterrupted
 from ..model.coordinates import coordinate_name
 from ..results.trajectory import Trajectory
+from ..results.verdict import Check
 from .base import diverged, non_finite_state, not_converged, singular_jacobian, step_prefix
 from .composition import KahanLi6, McLachlan8, _Composition
 from .discrete_gradient import DiscreteGradient
 from .gauss_legendre import TABLEAUX, GaussLegendre4, GaussLegendre6, ImplicitMidpoint, _Gauss
 from .stormer_verlet import StormerVerlet
 
-__all__ = ["GEOMETRIC", "integrate_fixed", "fixed_loop", "run"]
+__all__ = ["GEOMETRIC", "integrate_fixed", "fixed_loop", "run", "step_doubling_check", "FIXED_RTOL", "FIXED_ATOL"]
+
+#: the accuracy a fixed-step run is checked against when ``rtol``/``atol`` are not given (its verdict,
+#: :func:`step_doubling_check`): 1 % of each component's range (the user chose a step, not a tolerance: the
+#: verdict flags answers off by more), absolute below 1e-6
+FIXED_RTOL, FIXED_ATOL = 1e-2, 1e-6
 
 #: why a step failed when M is not positive definite at one of its points (both loops)
 SINGULAR_MASS = ("the mass matrix is singular (or not positive definite) at a point of the step: a singular "
@@ -241,3 +247,62 @@ def _step_fault(cause: str, k: int, tk: float, T: np.ndarray, Y: np.ndarray, whe
         f"step {k + 1} of {steps} failed at t={tk:.9g} ({state}): {cause}. The trajectory up to "
         f"t={T[keep - 1]:.9g}{undefined} is in the error's `partial` attribute.",
         t=tk, state=dict(zip(model.equations.coordinates, Y[-1, :n])), partial=partial)
+
+
+def step_doubling_check(traj: Trajectory, *, method: str, step: float, t_span, y0, compiled: bool,
+                        rtol: float, atol: float) -> Check:
+    r"""Richardson's estimate of the global error of a fixed-step run, from a second run at twice the step.
+
+    The scheme of order :math:`p` runs again with ``round(steps/2)`` steps of :math:`h_2 \approx 2h` (a run of
+    one step: two steps of :math:`h/2`); at the times both runs recorded (every common record, always the end)
+    the error of the first is :math:`e \approx |y_h - y_{h_2}| / |1 - (h_2/h)^p|`. The value checked is
+    :math:`\max_{i,t} e_i(t) / \max(\max_t|y_i|, atol/rtol)` — the relative global error of the worst
+    component — against ``rtol``. Cost: the second run, about half of the first. A second run that fails (its
+    Newton iteration, a non-finite state) fails the check: the step is near the scheme's limit.
+    """
+    t0, t1 = t_span
+    steps = max(1, int(round((t1 - t0) / step)))
+    h = (t1 - t0) / steps
+    idx = np.rint((traj.t - t0) / h).astype(np.int64)
+    stride = int(idx[1] - idx[0]) if len(idx) > 2 else steps
+    if steps == 1:  # nothing to double: halve
+        steps2, stride2 = 2, 1
+    elif steps % 2 == 0:
+        steps2, stride2 = steps // 2, (stride // 2 if stride % 2 == 0 else stride)
+    else:  # h2 is not 2h: the runs share their ends only
+        steps2 = (steps + 1) // 2
+        stride2 = steps2
+    h2 = (t1 - t0) / steps2
+    hm = traj.model.hamiltonian()
+    scheme = GEOMETRIC[method](hm)
+    where = (t0, np.asarray(y0, dtype=float), traj.model, f"{method} at step {h2:.3g} (accuracy check)", steps2)
+    advice = f"a smaller step than {abs(h):.3g} (or a higher-order method: gl6)"
+    try:
+        run2 = _run_compiled if compiled else _run_python
+        T2, Y2, _ = run2(hm, scheme, t0, h2, steps2, max(1, stride2), np.asarray(y0, dtype=float), where)
+    except IntegrationError as exc:
+        return Check("step-doubling error", math.inf, float(rtol), False, advice,
+                     f"the run at step {h2:.3g} failed: {str(exc).split(': ', 1)[-1][:200]}")
+    except KeyboardInterrupt:  # Ctrl-C in the second run: the first is complete
+        raise IntegrationInterrupted(f"{traj.method} was interrupted (Ctrl-C) during its accuracy check; the "
+                                     "completed trajectory is in the exception's `partial` attribute.",
+                                     t=float(traj.t[-1]), partial=traj) from None
+    a, b = _common_times(traj.t, T2, 1e-9 * abs(t1 - t0))
+    e = np.abs(traj.y[a] - Y2[b]) / abs(1.0 - (h2 / h) ** scheme.order)
+    scale = np.maximum(np.max(np.abs(traj.y), axis=0), atol / rtol)
+    rel = e / scale
+    value = float(np.max(rel)) if rel.size else math.inf
+    value = value if math.isfinite(value) else math.inf
+    worst = traj.t[a][np.unravel_index(np.argmax(rel), rel.shape)[0]] if math.isfinite(value) else t1
+    return Check.of("step-doubling error", value, rtol, advice,
+                    f"relative global error estimate of order {scheme.order}, worst at t={worst:.6g}")
+
+
+def _common_times(T: np.ndarray, T2: np.ndarray, tol: float) -> tuple[np.ndarray, np.ndarray]:
+    """Indices ``(a, b)`` with ``|T[a] − T2[b]| <= tol`` (both records are monotonic in time)."""
+    order = np.argsort(T2)
+    S = T2[order]
+    pos = np.clip(np.searchsorted(S, T), 1, len(S) - 1)
+    near = np.where(np.abs(S[pos - 1] - T) <= np.abs(S[pos] - T), pos - 1, pos)
+    hit = np.abs(S[near] - T) <= tol
+    return np.flatnonzero(hit), order[near[hit]]

@@ -109,12 +109,20 @@ class StepOptions:
     Attributes
     ----------
     h : the step (finite, > 0; the run takes ``round(span / h)`` steps, at most :data:`MAX_STEPS`)
+    estimate : whether the run's verdict includes Richardson's error estimate (default True): a second run
+        at twice the step, about half the cost of the first
+        (:func:`lagrange.integrate.fixed.step_doubling_check`); False skips it (the verdict then has the
+        energy check only)
     """
 
     h: float
+    estimate: bool = True
 
     def __post_init__(self):
         object.__setattr__(self, "h", _positive_finite("step", self.h))
+        if not isinstance(self.estimate, bool | np.bool_):
+            raise OptionError(f"StepOptions estimate must be True or False, got {self.estimate!r}")
+        object.__setattr__(self, "estimate", bool(self.estimate))
 
 
 def as_friction(value) -> FrictionOptions:

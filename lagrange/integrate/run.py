@@ -19,12 +19,16 @@ from ..codegen.numeric import NumericModel
 from ..errors import IntegrationError, LagrangeError, MethodError
 from ..results.trajectory import Trajectory
 from . import registry  # (auto is imported where method="auto" is resolved: a named method never loads it)
+from .checks import assess
 from .options import _DEPRECATED as _UNSET
 from .options import StepOptions, check_run_options, merge_deprecated
 from .prepare import GimbalLockWarning, check_model, initial_state, model_for, split_inputs
 from .request import RunRequest
 
-__all__ = ["simulate", "initial_state", "choose_method", "GimbalLockWarning"]
+__all__ = ["simulate", "initial_state", "choose_method", "GimbalLockWarning", "DEFAULT_RTOL", "DEFAULT_ATOL"]
+
+#: the adaptive methods' tolerances when none are given
+DEFAULT_RTOL, DEFAULT_ATOL = 1e-9, 1e-11
 
 
 def choose_method(eqs, params=None, t_span=(0.0, 1.0), y0=None, rtol: float | None = None, *,
@@ -80,8 +84,8 @@ def simulate(
     params: Mapping,
     *,
     method: str = "DOP853",
-    rtol: float = 1e-9,
-    atol: float = 1e-11,
+    rtol: float | None = None,
+    atol: float | None = None,
     t_eval=None,
     n_points: int = 1001,
     events=None,
@@ -123,7 +127,9 @@ def simulate(
         ``gl6`` (Gauss–Legendre, symplectic),
         ``verlet`` (Störmer–Verlet, needs a constant mass matrix and V(q)) or ``dg`` (discrete gradient,
         energy conserved to the Newton tolerance) — with ``step=h``; see :mod:`lagrange.integrate.fixed`.
-    rtol, atol : tolerances passed to scipy
+    rtol, atol : tolerances of the adaptive methods (default 1e-9 and 1e-11); for a fixed-step method the
+        accuracy its verdict checks (default ``FIXED_RTOL = 1e-2``, ``FIXED_ATOL = 1e-6`` of
+        :mod:`lagrange.integrate.fixed`)
     t_eval : output times; default ``n_points`` equally spaced times (fixed-step methods record about
         ``n_points`` states instead)
     max_step : largest step of the adaptive scipy methods
@@ -152,6 +158,10 @@ def simulate(
     Returns
     -------
     Trajectory
+        With its :attr:`~lagrange.results.trajectory.Trajectory.verdict`: the run's own accuracy checks
+        (:mod:`lagrange.integrate.checks`). When one fails, ``success`` is False, ``status`` is
+        ``RunStatus.INACCURATE`` and an :class:`~lagrange.errors.AccuracyWarning` names the check, the number
+        and what to try.
 
     Raises
     ------
@@ -188,8 +198,11 @@ def simulate(
     entry = None if isinstance(method, str) and method.strip().lower() == "auto" else registry.get(method)
     step_options = _step_for(entry, step)
     events = _events(events)
+    given = (rtol, atol)  # a fixed-step run's verdict checks the accuracy asked for, when asked
+    rtol, atol = (DEFAULT_RTOL if rtol is None else rtol), (DEFAULT_ATOL if atol is None else atol)
     t_eval = check_run_options((t0, t1), rtol=rtol, atol=atol, n_points=n_points, max_step=max_step,
-                               t_eval=t_eval, step=step_options, adaptive=entry is None or entry.adaptive)
+                               t_eval=t_eval, step=step_options,
+                               adaptive=entry is None or entry.adaptive or given != (None, None))
     # a Taylor-series method reads the whole right-hand side as one expression: a structural system gives it its
     # expanded equations (cached on disk) without deriving the structural form it would not use
     taylor = entry is not None and entry.family == "Taylor series" and model is None
@@ -232,7 +245,7 @@ def simulate(
                      backend=backend, loop=loop, rtol=rtol, atol=atol, max_step=max_step, n_points=int(n_points),
                      t_eval=t_eval, events=events, switches=switches, friction=fr, stabilization=st,
                      step=step_options, model_bound=bound)
-    return entry.runner()(req)
+    return assess(entry.runner()(req), req, entry, rtol=given[0], atol=given[1])
 
 
 def _span(t_span) -> tuple[float, float]:

@@ -53,7 +53,8 @@ from .compiled import (
     stopped_error,
 )
 
-__all__ = ["taylor_order", "interpreter", "available_interpreter", "integrate_taylor", "CHUNK_SECONDS", "ENGINES"]
+__all__ = ["taylor_order", "interpreter", "available_interpreter", "integrate_taylor", "restarter", "CHUNK_SECONDS",
+           "ENGINES"]
 
 _EPS = float(np.finfo(float).eps)
 #: wall time of one uninterrupted chunk of a run (Ctrl-C is answered between chunks)
@@ -264,3 +265,29 @@ def _trajectory(model, tape, t_eval, Y, n_out, y0, t0, label, order, steps, mess
                       method=label or f"taylor (order {order})", success=ok, message=message,
                       nfev=int(steps) * order, work=None if tape.nz == n2 else Y[:, n2].copy(),
                       initial=(t0, y0.copy()))
+
+
+def restarter(model: NumericModel, *, rtol: float, atol: float, engine: str = "auto"):
+    """``(restart, order)``: ``restart(t, z, t_end, max_step, max_steps) -> (t reached, z reached)`` runs the
+    same engine, order and tolerance as :func:`integrate_taylor` from the state ``z`` (``[q, q̇]`` and, for a
+    non-conservative system, the work integral) for at most ``max_steps`` steps towards ``t_end``; the checks of
+    :mod:`lagrange.integrate.taylor_checks` restart a run with it."""
+    tape = model.taylor_tape()
+    rtol = max(float(rtol), _EPS)
+    order = taylor_order(rtol)
+    p = np.ascontiguousarray(model.params, dtype=float)
+    how = interpreter(engine, backend=model.backend)
+    none, floor = np.empty(0), float(atol) / rtol
+    lib = _c_library() if how == "c" else None  # (found and verified once, not per restart)
+
+    def restart(t, z, t_end, max_step, max_steps):
+        z = np.ascontiguousarray(z, dtype=float)
+        if lib is not None:
+            _, t_new, z_new, _, _ = lib.run(tape, float(t), float(t_end), z, p, floor, order, float(max_step), none,
+                                            int(max_steps), np.empty((0, tape.nz)))
+        else:
+            _, t_new, z_new, *_ = _run(how, model, tape, float(t), float(t_end), z, p, floor, order,
+                                       float(max_step), none, int(max_steps))
+        return float(t_new), np.asarray(z_new, dtype=float)
+
+    return restart, order

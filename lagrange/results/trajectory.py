@@ -27,6 +27,7 @@ from ..codegen.numeric import NumericModel
 from ..conventions import VELOCITY_SUFFIX, t
 from ..model.coordinates import coordinate_name, is_coordinate
 from ..records import record
+from .verdict import RunStatus, Verdict
 
 __all__ = ["Trajectory"]
 
@@ -47,6 +48,9 @@ class Trajectory:
     t_events, y_events : lists from scipy (one entry per event function)
     switches : dry friction with ``friction="events"``: (switched model, σ of every ``sign()`` at the output
         times (m, K), every stick/slip mode change as :class:`lagrange.integrate.switching.Transition`)
+    verdict : the run's own accuracy checks (:class:`lagrange.results.verdict.Verdict`), computed once by
+        :func:`lagrange.simulate`; None for a trajectory that stopped early or was built elsewhere. ``success``
+        is False when a check failed; :attr:`status` says which of the three outcomes it was.
     """
 
     t: np.ndarray
@@ -63,6 +67,15 @@ class Trajectory:
     switches: tuple = ()  # (switched model, sigma (m, K), Transition tuple) when sign() switches were integrated
     initial_constraint_violation: dict = field(default_factory=dict)  # user's state before projection
     point_params: np.ndarray | None = None  # per output point parameter vectors (rough-constraint signs)
+    verdict: Verdict | None = None  # the run's own accuracy checks (lagrange.results.verdict)
+
+    @property
+    def status(self) -> RunStatus:
+        """:attr:`RunStatus.SUCCESS <lagrange.results.verdict.RunStatus.SUCCESS>` (reached the end, every check
+        passed), ``INACCURATE`` (reached the end, a check of :attr:`verdict` failed) or ``STOPPED``."""
+        if self.verdict is not None and not self.verdict.ok:
+            return RunStatus.INACCURATE
+        return RunStatus.SUCCESS if self.success else RunStatus.STOPPED
 
     @property
     def coordinates(self) -> tuple:
@@ -257,7 +270,8 @@ class Trajectory:
     def __repr__(self) -> str:
         return (
             f"<Trajectory {len(self.t)} points, t=[{self.t[0]:.6g}, {self.t[-1]:.6g}], "
-            f"method={self.method}, nfev={self.nfev}, success={self.success}>"
+            f"method={self.method}, nfev={self.nfev}, success={self.success}"
+            + (f", verdict: {self.verdict.summary()}" if self.verdict is not None else "") + ">"
         )
 
     def _repr_html_(self) -> str:
