@@ -37,7 +37,8 @@ import sympy as sp
 from sympy.core.function import AppliedUndef
 from sympy.core.random import rng as _sympy_rng
 
-from .budget import MAX_NODES, check, fits
+from . import limits
+from .budget import fits
 from .errors import SymbolicTimeoutError
 from .safe_sympify import sympify as _sympify
 
@@ -105,10 +106,16 @@ def run_bounded(fn: Callable[..., _R], *args, what: str, seconds: float | None =
 
 
 def _or_input(fn, expr, what):
-    try:
-        return run_bounded(fn, expr, what=what)
-    except SymbolicTimeoutError:
-        return expr
+    """A clean-up: ``fn(expr)`` bounded by :func:`run_bounded` and by a share of the symbolic stage's CPU budget
+    (:func:`lagrange.limits.tidy`); ``expr`` itself when either runs out."""
+
+    def attempt(e):
+        try:
+            return run_bounded(fn, e, what=what)
+        except SymbolicTimeoutError:
+            return e
+
+    return limits.tidy(attempt, expr, what=what)
 
 
 def simplify(expr, *, limit: int | None = None):
@@ -135,11 +142,12 @@ def factor(expr):
 
 
 def solve(*args, what: str = "solve", **kwargs):
-    """``sympy.solve``, bounded; raises :class:`SymbolicTimeoutError` naming ``what`` on timeout and
-    :class:`~lagrange.errors.ExpressionTooLarge` when an equation exceeds the size budget."""
+    """``sympy.solve``, bounded; raises :class:`SymbolicTimeoutError` naming ``what`` on timeout (of an attempt,
+    or of the symbolic stage it runs in: :mod:`lagrange.limits`) and :class:`~lagrange.errors.ExpressionTooLarge`
+    when an equation has more nodes than the stage's budget."""
     for a in args[:1]:
         for e in (a if isinstance(a, (list, tuple, sp.MatrixBase)) else [a]):
-            check(e, stage=what, what="the equation", max_expanded=MAX_NODES)
+            limits.measure(e, what=f"an equation of {what}")
     return run_bounded(sp.solve, *args, what=what, **kwargs)
 
 

@@ -27,6 +27,7 @@ from sympy.core.function import AppliedUndef
 
 from ..conventions import t
 from ..errors import AnalysisError, SymbolicTimeoutError
+from ..limits import bounded
 from ..model.coordinates import coordinate_name, is_coordinate, position_symbol, to_symbols
 from ..safe_sympify import sympify as _sympify
 from ..simplification import _probe, is_zero, run_bounded
@@ -150,6 +151,7 @@ def nonconservative_pairs(F, coords: Sequence, position=None) -> list:
     return bad
 
 
+@bounded('test for a potential')
 def is_conservative(F, coords: Sequence, position=None) -> bool:
     r"""True when the force field is conservative (the work ``Σ Q_r dq_r`` is exact), Wells (5.6)/(5.8).
 
@@ -187,6 +189,7 @@ def is_conservative(F, coords: Sequence, position=None) -> bool:
 
 # ------------------------------------------------------------------------------------------------- work
 
+@bounded('work integral')
 def work_along(F, coords: Sequence, path, over=None, position=None):
     r"""The work ``W = ∫ Σ_r Q_r dq_r`` of a force field along a path in the coordinates (Wells 5.1–5.3).
 
@@ -274,6 +277,7 @@ def _segment_work(Q, syms, seg, over):
 
 # --------------------------------------------------------------------------------------------- potential
 
+@bounded('potential')
 def potential_of(F, coords: Sequence, position=None, reference: Mapping | None = None):
     r"""The potential ``V(q)`` of a conservative field, ``Q_r = −∂V/∂q_r`` (Wells 5.4, 5.7).
 

@@ -21,7 +21,8 @@ from __future__ import annotations
 import sympy as sp
 from sympy.simplify.fu import TR2i, TR10i
 
-from ..budget import check, fits
+from .. import limits
+from ..budget import fits
 from ..conventions import POWER_FUNCTION_SIGN, RAYLEIGH_SIGN, t
 from ..model.coordinates import (
     acceleration_symbol,
@@ -63,17 +64,18 @@ def lagrange_equations(system) -> Equations:
     qdd = tuple(acceleration_symbol(c) for c in coords)
     n = len(q)
 
-    T = _tidy_kinetic(to_symbols(system.T, coords))
+    T = limits.tidy(_tidy_kinetic, to_symbols(system.T, coords), what="clean-up of T")
     V = to_symbols(system.V, coords)
     P = to_symbols(system.P, coords)
     D = to_symbols(system.rayleigh, coords)
-    F = [_tidy_force(to_symbols(system.forces[c], coords)) for c in coords]
+    F = [limits.tidy(_tidy_force, to_symbols(system.forces[c], coords), what="clean-up of a force") for c in coords]
 
     dT_dqd, hessian, convectives = kinetic_derivatives(T, q, qd)
     rows = [[sp.S.Zero] * n for _ in range(n)]  # a list, not sp.zeros: item assignment there costs O(n)
     nonzero: list[list[int]] = [[] for _ in range(n)]  # the structurally nonzero columns of each row of M
     for (i, j), h in sorted(hessian.items()):
-        h = _tidy_force(h)
+        limits.measure(h, what=f"the mass-matrix entry M[{q[i]}, {q[j]}]")
+        h = limits.tidy(_tidy_force, h, what="clean-up of a mass-matrix entry")
         if h != 0:
             rows[i][j] = rows[j][i] = h
             nonzero[i].append(j)
@@ -86,6 +88,7 @@ def lagrange_equations(system) -> Equations:
     potential_gradient = gradient(V, q)
     dP, dD = gradient(P, qd), gradient(D, qd)
     for i in range(n):
+        limits.checkpoint()
         convective = convectives[i]
         inertial.append(sp.Add(*(rows[i][j] * qdd[j] for j in sorted(nonzero[i]))) + convective)
         dV = potential_gradient[i]
@@ -93,7 +96,7 @@ def lagrange_equations(system) -> Equations:
         dissipative.append(diss)
         forcing.append(F[i] + diss - convective - dV)
     for i in range(n):
-        check(forcing[i], stage="differentiation", what=f"the forcing term of {q[i]}")
+        limits.measure(forcing[i], what=f"the forcing term of {q[i]}")
 
     nonconservative = tuple(F[i] + dissipative[i] for i in range(n))
     L = T - V
