@@ -6,14 +6,14 @@ over many coordinates) and an upper estimate would refuse models that derive qui
 (the derivation of a :class:`~lagrange.System`, each symbolic analysis function) therefore run under a
 budget that fires on the work done:
 
-* **time** — a deadline in CPU seconds of the process (:data:`TIMEOUT_VARIABLE`, default
+* **time** — a deadline in CPU seconds of the process (``$LAGRANGE_SYMBOLIC_TIMEOUT``, default
   :data:`DEFAULT_TIMEOUT`). In the main thread of a POSIX process the deadline interrupts sympy wherever it
   is (an ``ITIMER_PROF`` timer and its ``SIGPROF``); elsewhere (another thread, a platform without
   ``setitimer``, or a caller that already runs a ``SIGPROF`` timer or handler of its own) it is checked
   between the per-entry operations of the stage (:func:`checkpoint`) only, so one sympy call can overrun it.
   Past the deadline the stage raises :class:`~lagrange.errors.SymbolicTimeoutError`;
 * **size** — every entry a stage derives (a mass-matrix entry, a forcing term, a constraint's expanded bias)
-  is counted once built (:func:`measure`): beyond :data:`NODES_VARIABLE` distinct nodes (default
+  is counted once built (:func:`measure`): beyond ``$LAGRANGE_SYMBOLIC_BUDGET`` distinct nodes (default
   :data:`DEFAULT_NODES`) the stage raises :class:`~lagrange.errors.ExpressionTooLarge`.
 
 Both messages name the stage, the limit, the argument and the environment variable that raise it. A clean-up
@@ -23,12 +23,15 @@ stage's other clean-ups are skipped; only the stage's own deadline ends the stag
 
 Settings (an argument wins over the environment variable; each is validated):
 
-=====================  ===========================  =================================================
-argument               environment variable         meaning
-=====================  ===========================  =================================================
-``symbolic_timeout``   ``LAGRANGE_SYMBOLIC_TIMEOUT`` CPU seconds of one symbolic stage (``inf``: none)
-``symbolic_budget``    ``LAGRANGE_SYMBOLIC_BUDGET``  nodes of one derived expression
-=====================  ===========================  =================================================
+====================  ==============================  ================================================
+argument              environment variable            meaning
+====================  ==============================  ================================================
+``symbolic_timeout``  ``LAGRANGE_SYMBOLIC_TIMEOUT``   CPU seconds of one symbolic stage (``inf``: none)
+``symbolic_budget``   ``LAGRANGE_SYMBOLIC_BUDGET``    nodes of one derived expression
+====================  ==============================  ================================================
+
+The arguments are those of :class:`~lagrange.System` (the default of the analysis of that system) and of each
+analysis function (:func:`bounded`).
 
 A stage started inside another (the derivation that an analysis function triggers) ends no later than the
 outer stage's deadline.
@@ -59,7 +62,8 @@ __all__ = ["TIMEOUT_VARIABLE", "NODES_VARIABLE", "DEFAULT_TIMEOUT", "DEFAULT_NOD
 TIMEOUT_VARIABLE = "LAGRANGE_SYMBOLIC_TIMEOUT"
 NODES_VARIABLE = "LAGRANGE_SYMBOLIC_BUDGET"
 DEFAULT_TIMEOUT = 8.0
-"""CPU seconds of one symbolic stage: every model of the problem corpus derives in well under it."""
+"""CPU seconds of one symbolic stage: well above what the models of the problem corpus need (docs/guarantees.md),
+low enough that runaway growth ends within seconds."""
 DEFAULT_NODES = 200_000
 """Distinct nodes of one derived expression (the limit :data:`lagrange.budget.MAX_NODES` puts on inputs)."""
 TIDY_SHARE = 0.25
