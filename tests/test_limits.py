@@ -175,6 +175,15 @@ def test_bad_settings_are_refused(value, monkeypatch):
         lg.hamiltonian(nested_sines(1), symbolic_timeout=value)
 
 
+def test_eliminate_keeps_the_settings():
+    x, y = lg.coordinates("x y")
+    m, g, b = lg.parameters("m g b")
+    s = lg.System([x, y], bodies=[lg.Particle(m, (x, y))], V=m * g * y,
+                  constraints=[lg.Holonomic(y - b * x**2, "wire")], symbolic_timeout=0.5, symbolic_budget=123)
+    reduced = lg.eliminate(s, [y])
+    assert (reduced.symbolic_timeout, reduced.symbolic_budget) == (0.5, 123)
+
+
 def test_whole_numbers_of_nodes_only_and_no_limit_on_time():
     with pytest.raises(OptionError, match="whole number"):
         limits.symbolic_budget(2.5)
