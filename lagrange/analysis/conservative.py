@@ -151,7 +151,7 @@ def nonconservative_pairs(F, coords: Sequence, position=None) -> list:
     return bad
 
 
-@bounded('test for a potential')
+@bounded("test for a potential")
 def is_conservative(F, coords: Sequence, position=None) -> bool:
     r"""True when the force field is conservative (the work ``Σ Q_r dq_r`` is exact), Wells (5.6)/(5.8).
 
@@ -189,7 +189,7 @@ def is_conservative(F, coords: Sequence, position=None) -> bool:
 
 # ------------------------------------------------------------------------------------------------- work
 
-@bounded('work integral')
+@bounded("work integral")
 def work_along(F, coords: Sequence, path, over=None, position=None):
     r"""The work ``W = ∫ Σ_r Q_r dq_r`` of a force field along a path in the coordinates (Wells 5.1–5.3).
 
@@ -277,7 +277,7 @@ def _segment_work(Q, syms, seg, over):
 
 # --------------------------------------------------------------------------------------------- potential
 
-@bounded('potential')
+@bounded("potential")
 def potential_of(F, coords: Sequence, position=None, reference: Mapping | None = None):
     r"""The potential ``V(q)`` of a conservative field, ``Q_r = −∂V/∂q_r`` (Wells 5.4, 5.7).
 

@@ -102,7 +102,7 @@ def _check_motion(eqs, motion: Mapping) -> None:
                             "produce a motion the constraints forbid")
 
 
-@bounded('driving forces')
+@bounded("driving forces")
 def driving_forces(system, motion: Mapping) -> dict:
     r"""``{q: F'_q(t)}`` needed to produce ``motion = {q: q(t)}`` (every coordinate), Wells (13.1).
 
@@ -124,7 +124,7 @@ def driving_forces(system, motion: Mapping) -> dict:
     return {q: _tidy(_along(r, eqs, motion)) for q, r in zip(system.coordinates, _residuals(eqs))}
 
 
-@bounded('actuator forces')
+@bounded("actuator forces")
 def actuator_forces(system, virtual_work, unknowns: Sequence, motion: Mapping | None = None) -> dict:
     """Solve for actuator forces ``unknowns`` whose virtual work ``virtual_work`` (written with
     :func:`~lagrange.delta`) produces the system's motion — the prescribed ``motion`` if given, else the
@@ -204,7 +204,7 @@ def _rest_conditions(system, unk_syms: list) -> tuple[list, list]:
     return conds, list(eqs.multipliers)
 
 
-@bounded('static equilibrium')
+@bounded("static equilibrium")
 def static_equilibrium(system, unknowns: Sequence, params: Mapping | None = None, guess: Mapping | None = None):
     """Solve the equilibrium conditions (all velocities and accelerations zero) for ``unknowns``.
 

@@ -81,7 +81,7 @@ def equilibrium_equations(system) -> list:
             for k, e in enumerate(conds)]
 
 
-@bounded('equilibria')
+@bounded("equilibria")
 def equilibria(system, params: Mapping | None = None, guess: Mapping | None = None, *, symbolic: bool = True):
     """Static equilibria, with the constraint forces for a constrained system.
 

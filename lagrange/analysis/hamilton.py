@@ -72,7 +72,7 @@ class HamiltonianForm:
         return hamiltonian_latex(self)
 
 
-@bounded('Hamiltonian')
+@bounded("Hamiltonian")
 def hamiltonian(system) -> HamiltonianForm:
     """The Hamiltonian form of an unconstrained system (Wells ch. 16).
 

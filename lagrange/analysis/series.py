@@ -82,7 +82,7 @@ def _check_about(about) -> list:
     return coords
 
 
-@bounded('expansion of the potential')
+@bounded("expansion of the potential")
 def expand_potential(V, about: Mapping, order: int = 2) -> PotentialSeries:
     r"""The Taylor series of ``V`` about the point ``about`` to degree ``order`` (Wells §5.10, eq. 10.6).
 

@@ -263,7 +263,7 @@ def _dependent(system, given, J, count_rows: Sequence[int], what: str, velocity:
     return dep
 
 
-@bounded('linearization')
+@bounded("linearization")
 def linearize(system, about: Mapping | None = None, velocities: Mapping | None = None, *,
               params: Mapping | None = None, inputs: Sequence | None = None,
               independent: Sequence | None = None, speeds: Sequence | None = None) -> LinearModel:

@@ -74,7 +74,7 @@ def _bounded_simplify(e, limit: int = 120):
     return simplify(e) if sp.count_ops(e) <= limit else sp.factor_terms(sp.cancel(sp.together(e)))
 
 
-@bounded('Routhian')
+@bounded("Routhian")
 def routhian(system, ignorable=None) -> Routhian:
     """The Routhian for ``ignorable`` coordinates (default: all detected ignorable ones).
 
@@ -101,7 +101,7 @@ def routhian(system, ignorable=None) -> Routhian:
     return Routhian(system, ignorable, kept, tuple(p), R, rates)
 
 
-@bounded('steady-motion conditions')
+@bounded("steady-motion conditions")
 def steady_motion_conditions(r: Routhian) -> list:
     """``(∂R/∂q)₀ = 0`` with the kept velocities zero (Wells 11.10), in coordinate functions; solve them
     (sympy.solve or a root finder) for the steady values — there may be several."""
@@ -109,7 +109,7 @@ def steady_motion_conditions(r: Routhian) -> list:
     return [to_functions(sp.diff(r.R, position_symbol(c)).subs(rest), r.system.coordinates) for c in r.kept]
 
 
-@bounded('oscillations about a steady motion')
+@bounded("oscillations about a steady motion")
 def oscillations_about_steady_motion(r: Routhian, about: Mapping) -> LinearModel:
     """a, gyroscopic g and c of the small oscillations about a steady motion ``about = {q: b}``."""
     q = [position_symbol(c) for c in r.kept]

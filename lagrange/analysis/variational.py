@@ -37,7 +37,7 @@ from ..simplification import simplify
 __all__ = ["euler_lagrange", "action", "VariationalResult", "variational_integrate"]
 
 
-@bounded('Euler–Lagrange equations')
+@bounded("Euler–Lagrange equations")
 def euler_lagrange(F, functions: Sequence, variable) -> list[sp.Eq]:
     """Euler–Poisson equations of ``∫ F dx`` for unknown functions ``functions`` (sympy functions of
     ``variable``), any order of derivatives."""
