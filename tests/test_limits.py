@@ -283,7 +283,7 @@ def test_oscillations_about_steady_motion_with_a_spring_under_a_root_end_within_
     assert sp.simplify(lin.a[0, 0] - l**2 * m / 3) == 0 and lin.b[0, 0] == 0
 
 
-def test_analysis_takes_the_settings_by_argument():
+def test_analysis_takes_the_settings_by_argument(monkeypatch):
     system, th, _, _ = _bar_on_a_rotating_frame()
     r = lg.routhian(system)
     th0 = lg.parameters("theta0")
@@ -292,6 +292,10 @@ def test_analysis_takes_the_settings_by_argument():
     slow = lg.System(system.coordinates, T=system.T, V=system.V, symbolic_timeout=0.01)
     with pytest.raises(SymbolicTimeoutError):
         lg.routhian(slow)  # the system's own setting is the default of its analysis
+    monkeypatch.setenv("LAGRANGE_SYMBOLIC_TIMEOUT", "0.01")
+    with pytest.raises(SymbolicTimeoutError, match="Routhian.*0.01 CPU seconds"):
+        lg.routhian(system)  # and the environment's when neither is given
+    assert lg.routhian(system, symbolic_timeout=60).R is not None  # the argument wins
 
 
 # ------------------------------------------------------------------------------- the bicycle of test_kane3
