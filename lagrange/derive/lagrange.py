@@ -64,18 +64,18 @@ def lagrange_equations(system) -> Equations:
     qdd = tuple(acceleration_symbol(c) for c in coords)
     n = len(q)
 
-    T = limits.tidy(_tidy_kinetic, to_symbols(system.T, coords), what="clean-up of T")
+    T = _tidy_kinetic(to_symbols(system.T, coords))
     V = to_symbols(system.V, coords)
     P = to_symbols(system.P, coords)
     D = to_symbols(system.rayleigh, coords)
-    F = [limits.tidy(_tidy_force, to_symbols(system.forces[c], coords), what="clean-up of a force") for c in coords]
+    F = [_tidy_force(to_symbols(system.forces[c], coords)) for c in coords]
 
     dT_dqd, hessian, convectives = kinetic_derivatives(T, q, qd)
     rows = [[sp.S.Zero] * n for _ in range(n)]  # a list, not sp.zeros: item assignment there costs O(n)
     nonzero: list[list[int]] = [[] for _ in range(n)]  # the structurally nonzero columns of each row of M
     for (i, j), h in sorted(hessian.items()):
         limits.measure(h, what=f"the mass-matrix entry M[{q[i]}, {q[j]}]")
-        h = limits.tidy(_tidy_force, h, what="clean-up of a mass-matrix entry")
+        h = _tidy_force(h)
         if h != 0:
             rows[i][j] = rows[j][i] = h
             nonzero[i].append(j)
@@ -290,6 +290,11 @@ def _tidy_kinetic(T):
     """
     if sp.count_ops(T) > _KINETIC_LIMIT or not fits(T):
         return T
+    return limits.tidy(_compact_kinetic, T, what="clean-up of T")
+
+
+def _compact_kinetic(T):
+    """:func:`_tidy_kinetic`'s work, run under a share of the derivation's time (:func:`lagrange.limits.tidy`)."""
     e = _pythagoras(T)
     if e.has(sp.sin, sp.cos) and sp.count_ops(e) <= _TRIGSIMP_LIMIT:
         e2 = sp.expand(TR2i(TR10i(e)))
@@ -307,7 +312,7 @@ def _tidy_force(F):
     # the cheap bound first: count_ops of a bicycle's mass-matrix entries costs more than the bound
     if F == 0 or _expanded_terms(F) > _EXPAND_LIMIT or sp.count_ops(F) > _KINETIC_LIMIT or not fits(F):
         return F
-    e = _pythagoras(F)
+    e = limits.tidy(_pythagoras, F, what="clean-up of a force or mass-matrix entry")
     return e if sp.count_ops(e) <= sp.count_ops(F) else F
 
 
