@@ -16,6 +16,9 @@ expansion would exceed it is skipped (unproven), the numeric probe skips points 
 power would take a number of unbounded size, and a solve of too large an equation raises
 :class:`~lagrange.errors.ExpressionTooLarge`.
 
+Inside a symbolic stage (a derivation, an analysis: :mod:`lagrange.limits`) each clean-up also has at most a
+share of the stage's CPU time, and the stage's deadline bounds every call here.
+
 A simplification that does not finish is skipped (the expression is used as it is); a zero test that
 cannot be proven answers ``False`` (not known to vanish); a solve that does not finish raises
 :class:`~lagrange.errors.SymbolicTimeoutError`. Nothing is ever silently wrong, at worst less tidy.
