@@ -1,5 +1,8 @@
 r"""Size budgets of the symbolic stages: decided from the expression before the work, not by a clock.
 
+(The work itself is budgeted by :mod:`lagrange.limits`: a CPU-time deadline and a node count of what was built.
+The estimates here refuse only declared inputs; above :data:`EXPAND_NODES` they skip a clean-up, never refuse.)
+
 A short expression can stand for an enormous amount of work: ``(x + y + m + g + k + 1)**(99/2)`` has 21
 characters and multiplies out to about 3 million terms; ``exp(10**30*log(x))`` is ``x**(10**30)``, which
 no exact evaluation can finish; ``exp(exp(exp(exp(exp(x)))))`` overflows any arbitrary-precision

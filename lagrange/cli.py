@@ -640,7 +640,9 @@ def _cmd_modes(args) -> int:
             lin = linearize(system, about)
             _print_constrained(lin, pretty)
         residual = lin.acceleration if lin.acceleration is not None else tuple(lin.forcing)
-        residual = [sympy.simplify(sympy.sympify(e).subs(t_sym, 0)) for e in residual]
+        from .simplification import simplify  # bounded clean-up (lagrange.limits)
+
+        residual = [simplify(sympy.sympify(e).subs(t_sym, 0)) for e in residual]
         if any(e != 0 for e in residual):
             if not args.force:
                 raise SpecError(f"the reference state ({shown}) is not an equilibrium: q'' (or F) = {residual} there; "

@@ -119,8 +119,9 @@ class InputError(LagrangeError, TypeError):
 
 
 class SymbolicTimeoutError(LagrangeError, TimeoutError):
-    """A sympy computation (solve, simplify) ran out of time in every attempt; see
-    :mod:`lagrange.simplification` (``$LAGRANGE_SYMPY_SECONDS`` sets the limit per attempt)."""
+    """A sympy computation (solve, simplify) ran out of time in every attempt (:mod:`lagrange.simplification`,
+    ``$LAGRANGE_SYMPY_SECONDS`` per attempt), or a symbolic stage (a derivation, an analysis) passed its CPU-time
+    deadline (:mod:`lagrange.limits`: ``symbolic_timeout=`` or ``$LAGRANGE_SYMBOLIC_TIMEOUT``)."""
 
 
 __all__ = [

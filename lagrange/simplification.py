@@ -16,6 +16,9 @@ expansion would exceed it is skipped (unproven), the numeric probe skips points 
 power would take a number of unbounded size, and a solve of too large an equation raises
 :class:`~lagrange.errors.ExpressionTooLarge`.
 
+Inside a symbolic stage (a derivation, an analysis: :mod:`lagrange.limits`) each clean-up also has at most a
+share of the stage's CPU time, and the stage's deadline bounds every call here.
+
 A simplification that does not finish is skipped (the expression is used as it is); a zero test that
 cannot be proven answers ``False`` (not known to vanish); a solve that does not finish raises
 :class:`~lagrange.errors.SymbolicTimeoutError`. Nothing is ever silently wrong, at worst less tidy.
@@ -37,7 +40,8 @@ import sympy as sp
 from sympy.core.function import AppliedUndef
 from sympy.core.random import rng as _sympy_rng
 
-from .budget import MAX_NODES, check, fits
+from . import limits
+from .budget import fits
 from .errors import SymbolicTimeoutError
 from .safe_sympify import sympify as _sympify
 
@@ -105,10 +109,16 @@ def run_bounded(fn: Callable[..., _R], *args, what: str, seconds: float | None =
 
 
 def _or_input(fn, expr, what):
-    try:
-        return run_bounded(fn, expr, what=what)
-    except SymbolicTimeoutError:
-        return expr
+    """A clean-up: ``fn(expr)`` bounded by :func:`run_bounded` and by a share of the symbolic stage's CPU budget
+    (:func:`lagrange.limits.tidy`); ``expr`` itself when either runs out."""
+
+    def attempt(e):
+        try:
+            return run_bounded(fn, e, what=what)
+        except SymbolicTimeoutError:
+            return e
+
+    return limits.tidy(attempt, expr, what=what)
 
 
 def simplify(expr, *, limit: int | None = None):
@@ -135,11 +145,12 @@ def factor(expr):
 
 
 def solve(*args, what: str = "solve", **kwargs):
-    """``sympy.solve``, bounded; raises :class:`SymbolicTimeoutError` naming ``what`` on timeout and
-    :class:`~lagrange.errors.ExpressionTooLarge` when an equation exceeds the size budget."""
+    """``sympy.solve``, bounded; raises :class:`SymbolicTimeoutError` naming ``what`` on timeout (of an attempt,
+    or of the symbolic stage it runs in: :mod:`lagrange.limits`) and :class:`~lagrange.errors.ExpressionTooLarge`
+    when an equation has more nodes than the stage's budget."""
     for a in args[:1]:
         for e in (a if isinstance(a, (list, tuple, sp.MatrixBase)) else [a]):
-            check(e, stage=what, what="the equation", max_expanded=MAX_NODES)
+            limits.measure(e, what=f"an equation of {what}")
     return run_bounded(sp.solve, *args, what=what, **kwargs)
 
 

@@ -33,6 +33,7 @@ from sympy.core.function import AppliedUndef
 
 from ..conventions import t
 from ..errors import AnalysisError, SymbolicTimeoutError
+from ..limits import bounded
 from ..model.coordinates import coordinate_name, is_coordinate, position_symbol, to_symbols, velocity_symbol
 from ..safe_sympify import sympify as _sympify
 from ..simplification import _probe, is_zero, run_bounded
@@ -186,6 +187,7 @@ def _curl_pairs(Q, coords, syms) -> tuple[list, AnalysisError | None]:
     return bad, undecided
 
 
+@bounded("test for a potential")
 def is_conservative(F, coords: Sequence, position=None) -> bool:
     r"""True when the force field is conservative (the work ``Σ Q_r dq_r`` is exact), Wells (5.6)/(5.8).
 
@@ -233,6 +235,7 @@ def is_conservative(F, coords: Sequence, position=None) -> bool:
 
 # ------------------------------------------------------------------------------------------------- work
 
+@bounded("work integral")
 def work_along(F, coords: Sequence, path, over=None, position=None, rate=None):
     r"""The work ``W = ∫ Σ_r Q_r dq_r`` of a force along a path in the coordinates (Wells 5.1–5.3).
 
@@ -418,6 +421,7 @@ def _along(Q, syms, vel, seg, over, rate, what):
 
 # --------------------------------------------------------------------------------------------- potential
 
+@bounded("potential")
 def potential_of(F, coords: Sequence, position=None, reference: Mapping | None = None):
     r"""The potential ``V(q)`` of a conservative field, ``Q_r = −∂V/∂q_r`` (Wells 5.4, 5.7).
 

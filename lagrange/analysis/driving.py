@@ -32,6 +32,7 @@ import sympy as sp
 from ..conventions import t
 from ..derive.lagrange import _tidy_force
 from ..errors import LagrangeError
+from ..limits import bounded
 from ..model.coordinates import coordinate_name, to_functions, to_symbols
 from ..safe_sympify import sympify as _sympify
 from ..simplification import is_zero, solve
@@ -101,6 +102,7 @@ def _check_motion(eqs, motion: Mapping) -> None:
                             "produce a motion the constraints forbid")
 
 
+@bounded("driving forces")
 def driving_forces(system, motion: Mapping) -> dict:
     r"""``{q: F'_q(t)}`` needed to produce ``motion = {q: q(t)}`` (every coordinate), Wells (13.1).
 
@@ -122,6 +124,7 @@ def driving_forces(system, motion: Mapping) -> dict:
     return {q: _tidy(_along(r, eqs, motion)) for q, r in zip(system.coordinates, _residuals(eqs))}
 
 
+@bounded("actuator forces")
 def actuator_forces(system, virtual_work, unknowns: Sequence, motion: Mapping | None = None) -> dict:
     """Solve for actuator forces ``unknowns`` whose virtual work ``virtual_work`` (written with
     :func:`~lagrange.delta`) produces the system's motion — the prescribed ``motion`` if given, else the
@@ -201,6 +204,7 @@ def _rest_conditions(system, unk_syms: list) -> tuple[list, list]:
     return conds, list(eqs.multipliers)
 
 
+@bounded("static equilibrium")
 def static_equilibrium(system, unknowns: Sequence, params: Mapping | None = None, guess: Mapping | None = None):
     """Solve the equilibrium conditions (all velocities and accelerations zero) for ``unknowns``.
 

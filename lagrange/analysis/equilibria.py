@@ -20,6 +20,7 @@ import sympy as sp
 
 from ..conventions import t
 from ..errors import AnalysisError, LagrangeError
+from ..limits import bounded
 from ..model.coordinates import coordinate_name, position_symbol, to_functions
 from ..safe_sympify import sympify as _sympify
 from ..simplification import solve
@@ -80,6 +81,7 @@ def equilibrium_equations(system) -> list:
             for k, e in enumerate(conds)]
 
 
+@bounded("equilibria")
 def equilibria(system, params: Mapping | None = None, guess: Mapping | None = None, *, symbolic: bool = True):
     """Static equilibria, with the constraint forces for a constrained system.
 

@@ -18,6 +18,7 @@ import sympy as sp
 
 from ..conventions import t
 from ..errors import AnalysisError
+from ..limits import bounded
 from ..model.coordinates import coordinate_name, to_functions
 from ..records import record
 from ..safe_sympify import sympify as _sympify
@@ -71,6 +72,7 @@ class HamiltonianForm:
         return hamiltonian_latex(self)
 
 
+@bounded("Hamiltonian")
 def hamiltonian(system) -> HamiltonianForm:
     """The Hamiltonian form of an unconstrained system (Wells ch. 16).
 

@@ -22,6 +22,7 @@ import sympy as sp
 from sympy.core.function import AppliedUndef
 
 from ..errors import AnalysisError, SymbolicTimeoutError
+from ..limits import bounded
 from ..model.coordinates import coordinate_name, is_coordinate, position_symbol, to_symbols
 from ..records import record
 from ..safe_sympify import sympify as _sympify
@@ -81,6 +82,7 @@ def _check_about(about) -> list:
     return coords
 
 
+@bounded("expansion of the potential")
 def expand_potential(V, about: Mapping, order: int = 2) -> PotentialSeries:
     r"""The Taylor series of ``V`` about the point ``about`` to degree ``order`` (Wells §5.10, eq. 10.6).
 

@@ -39,6 +39,7 @@ import sympy as sp
 
 from ..conventions import t
 from ..errors import AnalysisError, LagrangeError
+from ..limits import bounded
 from ..model.coordinates import coordinate_name, position_symbol, velocity_symbol
 from ..records import record
 from ..safe_sympify import sympify as _sympify
@@ -271,6 +272,7 @@ def _dependent(system, given, J, count_rows: Sequence[int], what: str, velocity:
     return dep
 
 
+@bounded("linearization")
 def linearize(system, about: Mapping | None = None, velocities: Mapping | None = None, *,
               params: Mapping | None = None, inputs: Sequence | None = None,
               independent: Sequence | None = None, speeds: Sequence | None = None) -> LinearModel:

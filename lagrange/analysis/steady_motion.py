@@ -28,6 +28,7 @@ import sympy as sp
 
 from ..conventions import t
 from ..errors import AnalysisError
+from ..limits import bounded
 from ..model.coordinates import coordinate_name, position_symbol, to_functions, velocity_symbol
 from ..records import record
 from ..safe_sympify import sympify as _sympify
@@ -73,6 +74,7 @@ def _bounded_simplify(e, limit: int = 120):
     return simplify(e) if sp.count_ops(e) <= limit else sp.factor_terms(sp.cancel(sp.together(e)))
 
 
+@bounded("Routhian")
 def routhian(system, ignorable=None) -> Routhian:
     """The Routhian for ``ignorable`` coordinates (default: all detected ignorable ones).
 
@@ -99,6 +101,7 @@ def routhian(system, ignorable=None) -> Routhian:
     return Routhian(system, ignorable, kept, tuple(p), R, rates)
 
 
+@bounded("steady-motion conditions")
 def steady_motion_conditions(r: Routhian) -> list:
     """``(∂R/∂q)₀ = 0`` with the kept velocities zero (Wells 11.10), in coordinate functions; solve them
     (sympy.solve or a root finder) for the steady values — there may be several."""
@@ -106,6 +109,7 @@ def steady_motion_conditions(r: Routhian) -> list:
     return [to_functions(sp.diff(r.R, position_symbol(c)).subs(rest), r.system.coordinates) for c in r.kept]
 
 
+@bounded("oscillations about a steady motion")
 def oscillations_about_steady_motion(r: Routhian, about: Mapping) -> LinearModel:
     """a, gyroscopic g and c of the small oscillations about a steady motion ``about = {q: b}``."""
     q = [position_symbol(c) for c in r.kept]
@@ -116,5 +120,5 @@ def oscillations_about_steady_motion(r: Routhian, about: Mapping) -> LinearModel
     a = sp.Matrix(n, n, lambda i, j: sp.diff(r.R, qd[i], qd[j]).subs(at))
     g = sp.Matrix(n, n, lambda i, j: (sp.diff(r.R, qd[i], q[j]) - sp.diff(r.R, qd[j], q[i])).subs(at))
     c = sp.Matrix(n, n, lambda i, j: -sp.diff(r.R, q[i], q[j]).subs(at))
-    simp = lambda M: M.applyfunc(sp.simplify)  # noqa: E731
+    simp = lambda M: M.applyfunc(simplify)  # bounded clean-up (lagrange.simplification)  # noqa: E731
     return LinearModel(r.kept, simp(a), simp(g), simp(c), sp.zeros(n, 1), dict(about))

@@ -29,6 +29,7 @@ from ..codegen.numeric import bind_parameters
 from ..conventions import t
 from ..conventions import t as _t
 from ..errors import IntegrationError, LagrangeError
+from ..limits import bounded
 from ..records import record
 from ..safe_sympify import sympify as _sympify
 from ..simplification import simplify
@@ -36,6 +37,7 @@ from ..simplification import simplify
 __all__ = ["euler_lagrange", "action", "VariationalResult", "variational_integrate"]
 
 
+@bounded("Euler–Lagrange equations")
 def euler_lagrange(F, functions: Sequence, variable) -> list[sp.Eq]:
     """Euler–Poisson equations of ``∫ F dx`` for unknown functions ``functions`` (sympy functions of
     ``variable``), any order of derivatives."""

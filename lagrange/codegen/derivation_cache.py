@@ -93,6 +93,8 @@ UNKEYED_ATTRIBUTES = {
     "description": "text only",
     "derivation": "only expanded derivations are cached (structural ones are derived directly, in a fraction of it)",
     "_kinematic_bodies": "the bodies with prescribed motion substituted: in T",
+    "symbolic_timeout": "limits whether a derivation may finish, never what it derives (lagrange.limits)",
+    "symbolic_budget": "limits whether a derivation may finish, never what it derives (lagrange.limits)",
 }
 
 

@@ -21,7 +21,8 @@ from __future__ import annotations
 import sympy as sp
 from sympy.simplify.fu import TR2i, TR10i
 
-from ..budget import check, fits
+from .. import limits
+from ..budget import fits
 from ..conventions import POWER_FUNCTION_SIGN, RAYLEIGH_SIGN, t
 from ..model.coordinates import (
     acceleration_symbol,
@@ -73,6 +74,7 @@ def lagrange_equations(system) -> Equations:
     rows = [[sp.S.Zero] * n for _ in range(n)]  # a list, not sp.zeros: item assignment there costs O(n)
     nonzero: list[list[int]] = [[] for _ in range(n)]  # the structurally nonzero columns of each row of M
     for (i, j), h in sorted(hessian.items()):
+        limits.measure(h, what=f"the mass-matrix entry M[{q[i]}, {q[j]}]")
         h = _tidy_force(h)
         if h != 0:
             rows[i][j] = rows[j][i] = h
@@ -86,6 +88,7 @@ def lagrange_equations(system) -> Equations:
     potential_gradient = gradient(V, q)
     dP, dD = gradient(P, qd), gradient(D, qd)
     for i in range(n):
+        limits.checkpoint()
         convective = convectives[i]
         inertial.append(sp.Add(*(rows[i][j] * qdd[j] for j in sorted(nonzero[i]))) + convective)
         dV = potential_gradient[i]
@@ -93,7 +96,7 @@ def lagrange_equations(system) -> Equations:
         dissipative.append(diss)
         forcing.append(F[i] + diss - convective - dV)
     for i in range(n):
-        check(forcing[i], stage="differentiation", what=f"the forcing term of {q[i]}")
+        limits.measure(forcing[i], what=f"the forcing term of {q[i]}")
 
     nonconservative = tuple(F[i] + dissipative[i] for i in range(n))
     L = T - V
@@ -287,6 +290,11 @@ def _tidy_kinetic(T):
     """
     if sp.count_ops(T) > _KINETIC_LIMIT or not fits(T):
         return T
+    return limits.tidy(_compact_kinetic, T, what="clean-up of T")
+
+
+def _compact_kinetic(T):
+    """:func:`_tidy_kinetic`'s work, run under a share of the derivation's time (:func:`lagrange.limits.tidy`)."""
     e = _pythagoras(T)
     if e.has(sp.sin, sp.cos) and sp.count_ops(e) <= _TRIGSIMP_LIMIT:
         e2 = sp.expand(TR2i(TR10i(e)))
@@ -304,7 +312,7 @@ def _tidy_force(F):
     # the cheap bound first: count_ops of a bicycle's mass-matrix entries costs more than the bound
     if F == 0 or _expanded_terms(F) > _EXPAND_LIMIT or sp.count_ops(F) > _KINETIC_LIMIT or not fits(F):
         return F
-    e = _pythagoras(F)
+    e = limits.tidy(_pythagoras, F, what="clean-up of a force or mass-matrix entry")
     return e if sp.count_ops(e) <= sp.count_ops(F) else F
 
 

@@ -44,7 +44,7 @@ from ..errors import DeclarationError
 from ..model.constraints import Holonomic, Nonholonomic
 from ..model.coordinates import SYMPY_TIME, coordinate_name, normalize_time
 from ..safe_sympify import sympify as _sympify
-from ..simplification import is_zero
+from ..simplification import is_zero, simplify
 
 __all__ = ["from_mechanics", "to_mechanics"]
 
@@ -194,7 +194,7 @@ def _u_map(q, u, kdes) -> dict:
         raise DeclarationError(f"{len(u)} generalized speeds but {len(kdes)} kinematic differential equations")
     A, b = sp.linear_eq_to_matrix(list(kdes), list(u))
     sol = A.LUsolve(b)
-    return dict(zip(u, (sp.simplify(s) if sp.count_ops(s) < 40 else s for s in sol)))
+    return dict(zip(u, (simplify(s, limit=39) for s in sol)))  # bounded clean-up (lagrange.limits)
 
 
 def _from_kane_model(N, q, u, kdes, bodies, loads, hol, nonhol, name):

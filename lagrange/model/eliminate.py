@@ -125,4 +125,6 @@ def eliminate(system, solutions: Mapping | Sequence):
         name=(system.name + " (reduced)") if system.name else "",
         constraints=remaining,
         description=system.description,
+        symbolic_timeout=system.symbolic_timeout,
+        symbolic_budget=system.symbolic_budget,
     )

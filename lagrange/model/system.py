@@ -18,6 +18,7 @@ from typing import TYPE_CHECKING, Any, NamedTuple
 import sympy as sp
 from sympy.core.function import AppliedUndef
 
+from .. import limits
 from ..budget import check_declared
 from ..conventions import VELOCITY_SUFFIX, t
 from ..conventions import t as _TIME
@@ -67,7 +68,8 @@ def _derive_expanded(system: System) -> Equations:
     loads the equations from the derivation cache and never imports the derivation)."""
     from ..derive.lagrange import lagrange_equations
 
-    return lagrange_equations(system)
+    with system.symbolic_stage("derivation"):
+        return lagrange_equations(system)
 
 
 class System:
@@ -117,6 +119,14 @@ class System:
         (:func:`lagrange.derive.derivation_choice.kinetic_declaration`), :attr:`T` is built on first access only
         (the bodies' kinematics are checked at declaration; the derivation cache is keyed by those fields, so a
         warm re-run never builds T).
+    symbolic_timeout : float, optional
+        CPU seconds the derivation (and the symbolic analysis of this system) may take before it ends in
+        :class:`~lagrange.errors.SymbolicTimeoutError`; default ``$LAGRANGE_SYMBOLIC_TIMEOUT`` or 8
+        (:mod:`lagrange.limits`). ``float("inf")``: no limit.
+    symbolic_budget : int, optional
+        Nodes one derived expression may have before the derivation ends in
+        :class:`~lagrange.errors.ExpressionTooLarge`; default ``$LAGRANGE_SYMBOLIC_BUDGET`` or 200,000.
+        Neither setting changes the equations derived, only whether their derivation may finish.
 
     Attributes
     ----------
@@ -163,11 +173,17 @@ class System:
         constraints: Sequence = (),
         description: str = "",
         derivation: str = "auto",
+        symbolic_timeout: float | None = None,
+        symbolic_budget: int | None = None,
     ):
         from ..derive.derivation_choice import DERIVATIONS, auto_structural, kinetic_declaration, structural_refusal
 
         if derivation not in DERIVATIONS:
             raise DeclarationError(f"derivation={derivation!r} is not one of {', '.join(map(repr, DERIVATIONS))}")
+        if symbolic_timeout is not None:  # validated now (OptionError); None: the environment, read when deriving
+            limits.symbolic_timeout(symbolic_timeout)
+        if symbolic_budget is not None:
+            limits.symbolic_budget(symbolic_budget)
         problems: list[str] = []
         constraints = _flatten(constraints)  # a joint (lagrange.model.joints) is a tuple of constraints
         # sympy.physics.mechanics dynamicsymbols (functions of Symbol('t')) are accepted: their time becomes t
@@ -307,6 +323,8 @@ class System:
         self.prescribed: dict = presc
         self.constraints: tuple = specs
         self._declared_parameters = tuple(parameters) if parameters is not None else None
+        self.symbolic_timeout: float | None = symbolic_timeout
+        self.symbolic_budget: int | None = symbolic_budget
         self._frozen = True
 
     # --- immutability -------------------------------------------------------------------------
@@ -390,11 +408,18 @@ class System:
         if self.derivation == "structural":  # seconds → a fraction: no derivation cache needed (nor its key's T)
             from ..derive.structural import structural_equations
 
-            return structural_equations(self)
+            with self.symbolic_stage("derivation"):
+                return structural_equations(self)
         # loaded from the on-disk derivation cache when this declaration was derived before (same versions)
         from ..codegen.derivation_cache import cached_equations
 
         return cached_equations(self, _derive_expanded)
+
+    def symbolic_stage(self, what: str):
+        """A :func:`lagrange.limits.stage` named ``what`` of this system, under its ``symbolic_timeout`` and
+        ``symbolic_budget`` (None: ``$LAGRANGE_SYMBOLIC_TIMEOUT`` / ``$LAGRANGE_SYMBOLIC_BUDGET`` or the defaults)."""
+        name = f" of {self.name}" if self.name else ""
+        return limits.stage(f"{what}{name}", timeout=self.symbolic_timeout, budget=self.symbolic_budget)
 
     @property
     def derived(self) -> Equations:
