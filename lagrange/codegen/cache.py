@@ -48,8 +48,8 @@ from pathlib import Path
 from ..errors import CacheError, CacheIntegrityWarning
 from .digest import compare_digest, mac
 
-__all__ = ["DIR_VAR", "TRUST_VAR", "SECRET_NAME", "cache_root", "cache_dir", "trusted", "atomic_write",
-           "write_sealed", "read_verified", "seal", "verify", "tag"]
+__all__ = ["DIR_VAR", "TRUST_VAR", "SECRET_NAME", "cache_root", "cache_dir", "trusted", "check_private",
+           "private_subdirectory", "atomic_write", "write_sealed", "read_verified", "seal", "verify", "tag"]
 
 #: the cache directory, when set (else ``$XDG_CACHE_HOME/lagrange``, else ``~/.cache/lagrange``)
 DIR_VAR = "LAGRANGE_CACHE_DIR"
@@ -130,6 +130,43 @@ def cache_dir() -> Path:
     if not stat.S_ISDIR(st.st_mode):
         raise CacheError(f"the cache directory {path} is not a directory: set {DIR_VAR} to a directory")
     _refuse(path, st, "cache directory", 0o022, f"`chmod 700 {path}` if it is yours")
+    return path
+
+
+def check_private(path: Path, what: str, fix: str = "") -> None:
+    """Apply the cache directory's rules to another directory lagrange keeps code in (``what`` names it,
+    ``fix`` adds a remedy to the message): :class:`CacheError` when ``path`` is owned by another user or
+    writable by group or others, unless ``$LAGRANGE_CACHE_TRUST`` is set."""
+    _refuse(path, os.stat(path), what, 0o022, f"`chmod 700 {path}` if it is yours{fix}")
+
+
+def private_subdirectory(path: Path, what: str) -> Path:
+    """The directory ``path``, made by this user with mode ``0700`` when missing; an existing one must be a
+    real directory (checked with ``lstat``: never a symbolic link), owned by this user and closed to group and
+    others. Nothing else is accepted, whatever ``$LAGRANGE_CACHE_TRUST`` says, so a directory someone else
+    made under a predictable name is refused (:class:`CacheError`) instead of being read."""
+    path = Path(path)
+    try:
+        os.mkdir(path, 0o700)
+        os.chmod(path, 0o700)
+    except FileExistsError:
+        pass
+    st = os.lstat(path)
+    uid = _euid()
+    problems = []
+    if stat.S_ISLNK(st.st_mode):
+        problems.append("a symbolic link")
+    elif not stat.S_ISDIR(st.st_mode):
+        problems.append("not a directory")
+    else:
+        if uid is not None and st.st_uid != uid:
+            problems.append(f"owned by uid {st.st_uid}, not by you (uid {uid})")
+        if st.st_mode & 0o077:
+            problems.append(f"open to group or others (mode {stat.S_IMODE(st.st_mode):04o})")
+    if problems:
+        raise CacheError(f"lagrange will not use the {what} {path}: it is {' and '.join(problems)}, so someone "
+                         f"else could have put code there for lagrange to load. Fix: remove {path} (lagrange "
+                         "makes it again, privately), or use a private directory")
     return path
 
 
