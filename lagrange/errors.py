@@ -205,3 +205,9 @@ class ExpressionTooLarge(LagrangeError, ValueError):
 
 
 __all__ += ["ExpressionTooLarge"]
+
+
+class ExpressionTypeError(LagrangeError, TypeError):
+    """A value given where an expression is expected is neither a number, a sympy object, a container of
+    them nor a string of numbers (:mod:`lagrange.safe_sympify`): it is refused, never converted through its
+    text (sympy's own fallback parses ``str(value)``, which is ``eval``)."""

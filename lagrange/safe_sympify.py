@@ -13,11 +13,12 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 
+import numpy as np
 import sympy as sp
 
-from .errors import SpecError
+from .errors import ExpressionTypeError, SpecError
 
-__all__ = ["sympify"]
+__all__ = ["sympify", "matrix"]
 
 
 def sympify(value, *args, where: str = "value", **kwargs):
@@ -28,8 +29,9 @@ def sympify(value, *args, where: str = "value", **kwargs):
     ------
     SpecError
         (a :class:`ValueError`) when a string is not an expression of numbers; the message names ``where``.
-    sympy.SympifyError
-        when ``value`` is neither a number, a sympy object, a container of them nor a string.
+    ExpressionTypeError
+        (a :class:`TypeError`) when ``value`` is neither a number, a sympy object, a container of them nor a
+        string; its text is never parsed.
 
     >>> sympify("2*pi") == 2 * sp.pi
     True
@@ -42,16 +44,39 @@ def sympify(value, *args, where: str = "value", **kwargs):
     if isinstance(value, (str, bytes)):
         return _number(value.decode() if isinstance(value, bytes) else value, where)
     if isinstance(value, (list, tuple, set, frozenset)):
-        if any(isinstance(v, (str, bytes, list, tuple, set, frozenset, Mapping)) for v in value):
-            return sp.sympify(type(value)(sympify(v, where=where) for v in value), *args, **kwargs)
-    elif isinstance(value, Mapping):
-        value = {sympify(k, where=where): sympify(v, where=where) for k, v in value.items()}
+        # element by element: sympy's own conversion of a container falls back to parsing ``str(item)``
+        return type(value)(sympify(v, *args, where=where, **kwargs) for v in value)
+    if isinstance(value, Mapping):
+        return {sympify(k, where=where): sympify(v, *args, where=where, **kwargs) for k, v in value.items()}
+    if getattr(getattr(value, "dtype", None), "kind", "") in ("U", "S", "O"):  # an array of text or objects
+        return sp.Array(sympify(value.tolist(), *args, where=where, **kwargs))
     try:
         return sp.sympify(value, *args, strict=True, **kwargs)
     except sp.SympifyError:
-        if isinstance(value, (list, tuple, set, frozenset, Mapping)) or value is None or hasattr(value, "shape"):
-            return sp.sympify(value, *args, **kwargs)  # containers and arrays of numbers: no text is parsed
-        raise
+        if value is None or isinstance(value, np.ndarray):
+            return sp.sympify(value, *args, **kwargs)  # an array of numbers: no text is parsed
+        raise ExpressionTypeError(f"{where}: {type(value).__name__} object is not a number or a sympy "
+                                  "expression; build expressions with lagrange.coordinates and "
+                                  "lagrange.parameters (its text is never parsed)") from None
+
+
+def matrix(value, where: str = "matrix") -> sp.Matrix:
+    """``sympy.Matrix(value)`` whose entries went through :func:`sympify` first (``sympy.Matrix`` of a nested
+    list converts each entry with sympy's parsing ``sympify``: a string entry would be evaluated).
+
+    >>> matrix([[1, "1/2"], [0, 1]])[0, 1]
+    1/2
+    """
+    if isinstance(value, sp.MatrixBase):
+        return sp.Matrix(value)
+    if hasattr(value, "tolist") and not isinstance(value, sp.Basic):
+        value = value.tolist()
+    if isinstance(value, (list, tuple)):
+        value = [list(sympify(row, where=where)) if isinstance(row, (list, tuple)) or hasattr(row, "tolist")
+                 else sympify(row, where=where) for row in value]
+    else:
+        value = sympify(value, where=where)
+    return sp.Matrix(value)
 
 
 def _number(text: str, where: str) -> sp.Expr:

@@ -116,7 +116,100 @@ ENTRIES = _entries()
 #: CLI flags fed the hostile strings
 CLI_FLAGS = (("simulate", "--param", "k"), ("simulate", "--initial", "x"), ("modes", "--about", "x"),
              ("modes", "--param", "k"))
-CANARY_ENTRIES = len(ENTRIES) + len(CLI_FLAGS)
+
+
+class _Disguised:
+    """Not a string, yet its text is the payload: older sympy parsed ``str(obj)`` of an object it did not know;
+    lagrange refuses such a value with a LagrangeError (ExpressionTypeError, a TypeError) instead of passing
+    it on."""
+
+    def __init__(self, text):
+        self.text = text
+
+    def __str__(self):
+        return self.text
+
+    __repr__ = __str__
+
+
+def _api_entries():
+    """Every public constructor and function that takes an expression, a vector, a matrix or a mapping of
+    values, with the payload ``v`` in one such argument: ``(name, call(v))``. A vector gets it as its first
+    component, a matrix as its first entry, a mapping as a value."""
+    from lagrange.model.rotations import rot_x, rot_y
+
+    x, y = lg.coordinates("x y")
+    m, k = lg.parameters("m k")
+    osc = lg.System([x], T=m * x.diff(t) ** 2 / 2, V=k * x**2 / 2)
+    body = lg.RigidBody(1, (1, 1, 1), orientation=lg.rot_z(x))
+
+    def vec(v):
+        return [v, 0, 0]
+
+    def mat(v):
+        return [[v, 0, 0], [0, 1, 0], [0, 0, 1]]
+
+    def sys_with(v, **kw):
+        return lg.System([x], **{"T": osc.T, "V": 0, **kw}).equations
+
+    calls = {
+        "rot_x": lambda v: rot_x(v), "rot_y": lambda v: rot_y(v), "rot_z": lambda v: lg.rot_z(v),
+        "EulerAngles": lambda v: lg.EulerAngles(x, v, y).matrix,
+        "Quaternion": lambda v: lg.Quaternion(v, x, y, 0).matrix,
+        "RotationSequence": lambda v: lg.RotationSequence(("z", v)).matrix,
+        "Ellipsoid": lambda v: lg.Ellipsoid(v, 1),
+        "Ellipsoid.radius": lambda v: lg.WELLS_1924.radius(v),
+        "EarthFrame": lambda v: lg.EarthFrame(v),
+        "apparent_gravity": lambda v: lg.apparent_gravity(v),
+        "Frame.rotation": lambda v: lg.Frame(rotation=mat(v)),
+        "Frame.origin": lambda v: lg.Frame(origin=vec(v)),
+        "Frame.point": lambda v: lg.Frame().point(vec(v)),
+        "RigidBody.mass": lambda v: lg.RigidBody(v, (1, 1, 1)),
+        "RigidBody.inertia": lambda v: lg.RigidBody(1, (v, 1, 1)),
+        "RigidBody.inertia_matrix": lambda v: lg.RigidBody(1, sp.Matrix(mat(1)).subs(1, 1).tolist() and mat(v)),
+        "RigidBody.orientation": lambda v: lg.RigidBody(1, (1, 1, 1), orientation=mat(v)),
+        "RigidBody.origin": lambda v: lg.RigidBody(1, (1, 1, 1), origin=vec(v)),
+        "RigidBody.com": lambda v: lg.RigidBody(1, (1, 1, 1), com=vec(v)),
+        "RigidBody.point": lambda v: body.point(vec(v)),
+        "Inertia": lambda v: lg.Inertia(v, 1, 1),
+        "Inertia.rotated": lambda v: lg.Inertia(1, 1, 1).rotated(mat(v)),
+        "Particle.mass": lambda v: lg.Particle(v, (x, 0)),
+        "Particle.position": lambda v: lg.Particle(1, (v, 0)),
+        "MaterialPoint": lambda v: lg.MaterialPoint(body, vec(v)),
+        "Force": lambda v: lg.Force(body.point((1, 0, 0)), vec(v)),
+        "Torque": lambda v: lg.Torque(body, vec(v)),
+        "Holonomic": lambda v: lg.Holonomic(v),
+        "Nonholonomic": lambda v: lg.Nonholonomic(v),
+        "Differential": lambda v: lg.Differential({x: v}),
+        "Rough": lambda v: lg.Rough(x, v, x.diff(t)),
+        "System.T": lambda v: sys_with(v, T=v),
+        "System.P": lambda v: sys_with(v, P=v),
+        "System.rayleigh": lambda v: sys_with(v, rayleigh=v),
+        "delta": lambda v: lg.delta(v),
+        "euler_lagrange": lambda v: lg.euler_lagrange(v, [x], t),
+        "expand_potential": lambda v: lg.expand_potential(v, {x: 0}),
+        "expand_potential.about": lambda v: lg.expand_potential(k * x**2, {x: v}),
+        "is_conservative": lambda v: lg.is_conservative([v], [x]),
+        "potential_of": lambda v: lg.potential_of([v], [x]),
+        "work_along": lambda v: lg.work_along([k * x], [x], [v]),
+        "to_symbols": lambda v: lg.to_symbols(v, [x]),
+        "to_functions": lambda v: lg.to_functions(v, [x]),
+        "latex": lambda v: lg.latex(v),
+        "pretty": lambda v: lg.pretty(v),
+        "linearize.about": lambda v: lg.linearize(osc, {x: v}),
+        "driving_forces": lambda v: lg.driving_forces(osc, {x: v}),
+        "actuator_forces": lambda v: lg.actuator_forces(osc, v, [k]),
+        "static_equilibrium": lambda v: lg.static_equilibrium(osc, [x], {"m": 1, "k": v}),
+        "eliminate": lambda v: lg.eliminate(lg.System([x, y], T=osc.T, V=0), {y: v}),
+        "support_loads.force": lambda v: lg.support_loads(body, vec(v)),
+        "support_loads.torque": lambda v: lg.support_loads(body, (0, 0, 0), vec(v)),
+        "characteristic_roots": lambda v: lg.characteristic_roots(lg.linearize(osc, {x: 0}), {"m": v, "k": 1}),
+    }
+    return list(calls.items())
+
+
+API_ENTRIES = _api_entries()
+CANARY_ENTRIES = len(ENTRIES) + len(CLI_FLAGS) + len(API_ENTRIES)
 
 
 @pytest.mark.parametrize("entry", ENTRIES, ids=[e.__name__ for e in ENTRIES])
@@ -134,6 +227,35 @@ def test_hostile_value_is_refused_with_a_clear_error(entry, canary):
     with pytest.raises(LagrangeError, match="__import__|not a number|cannot|not allowed|unknown") as info:
         entry(s, _hostile(canary)[0])
     assert isinstance(info.value, ValueError)
+
+
+@pytest.mark.parametrize("name, call", API_ENTRIES, ids=[n for n, _ in API_ENTRIES])
+def test_public_api_never_evaluates_a_string(name, call, canary):
+    """Each public constructor and function that takes expressions: a code-running string (or an object whose
+    text is one) is read by the spec parser or refused with a LagrangeError; it never runs."""
+    for value in _hostile(canary):
+        try:
+            call(value)
+        except LagrangeError:
+            pass
+        assert not canary.exists(), f"{name} evaluated {value!r}"
+    if name in ("latex", "pretty"):  # printers typeset any object's text as text; they convert nothing
+        assert "import" in call(_Disguised(_hostile(canary)[0])) and not canary.exists()
+    else:
+        with pytest.raises(LagrangeError):
+            call(_Disguised(_hostile(canary)[0]))
+
+
+def test_public_api_still_takes_strings_of_numbers():
+    """The quiet side: a string that is an expression of numbers is read as that number where an expression
+    is expected."""
+    x = lg.coordinates("x")
+    assert lg.rot_z("pi/2") == lg.rot_z(sp.pi / 2)
+    assert lg.EulerAngles(x, "1/2", 0).theta == sp.Rational(1, 2)
+    assert lg.Frame(rotation=[["1", 0, 0], [0, 1, 0], [0, 0, 1]]).rotation == sp.eye(3)
+    assert lg.RigidBody(1, (1, 1, 1), orientation=[["1", 0, 0], [0, 1, 0], [0, 0, 1]]).R == sp.eye(3)
+    assert lg.Ellipsoid("2", 1).a == 2
+    assert lg.Holonomic("0").expr == 0
 
 
 def test_numeric_strings_are_parsed_safely():

@@ -32,7 +32,7 @@ import sympy as sp
 from ..conventions import t
 from ..derive.lagrange import _tidy_force
 from ..errors import LagrangeError
-from ..model.coordinates import coordinate_name, to_functions, to_symbols
+from ..model.coordinates import coordinate_name, is_coordinate, to_functions, to_symbols
 from ..safe_sympify import sympify as _sympify
 from ..simplification import is_zero, solve
 
@@ -113,6 +113,8 @@ def driving_forces(system, motion: Mapping) -> dict:
     LagrangeError
         A coordinate's motion is missing, the motion violates a constraint, or a constraint is rough.
     """
+    motion = {q: _sympify(v, where=f"motion of {coordinate_name(q) if is_coordinate(q) else q}")
+              for q, v in motion.items()}
     missing = [coordinate_name(q) for q in system.coordinates if q not in motion]
     if missing:
         raise LagrangeError(f"the prescribed motion must give every coordinate; missing {', '.join(missing)}")
