@@ -18,7 +18,7 @@ import sympy as sp
 
 from .errors import ExpressionTypeError, SpecError
 
-__all__ = ["sympify", "matrix"]
+__all__ = ["sympify", "matrix", "lambdify"]
 
 
 def sympify(value, *args, where: str = "value", **kwargs):
@@ -87,3 +87,48 @@ def _number(text: str, where: str) -> sp.Expr:
     except SpecError as exc:
         raise SpecError(f"{exc}; strings are read as numbers only, never evaluated: build expressions with "
                         "lagrange.coordinates and lagrange.parameters (or write a TOML spec)") from None
+
+
+def _flat(args) -> list:
+    if isinstance(args, (list, tuple)):
+        return [s for a in args for s in _flat(a)]
+    if isinstance(args, sp.MatrixBase):
+        return list(args)
+    return [args]
+
+
+def lambdify(args, expr, modules=None, *, where: str = "an expression", **kwargs):
+    """``sympy.lambdify(args, expr, modules, dummify=True, **kwargs)`` after checking that no name from the
+    user's expressions is printed into the generated code.
+
+    ``lambdify`` prints an undefined function (``sympy.Function("f")``, also an ``implemented_function``) by
+    its name and a symbol that is not an argument by its name, so a name such as
+    ``__import__('os').system(...)`` would run as code. Both are refused up front (:class:`ExpressionTypeError`
+    naming them and ``where``); the arguments are replaced by dummies (``dummify=True``), so their names
+    never reach the code either.
+
+    >>> x = sp.Symbol("x")
+    >>> lambdify([x], x**2 + 1, "math")(2.0)
+    5.0
+    >>> try:
+    ...     lambdify([x], sp.Function("f")(x), "math")
+    ... except ExpressionTypeError as exc:
+    ...     print(str(exc)[:47])
+    an expression holds the undefined function(s) f
+    """
+    from sympy.core.function import AppliedUndef
+
+    exprs = [e for e in _flat(expr if isinstance(expr, (list, tuple, sp.MatrixBase)) else [expr])
+             if isinstance(e, sp.Basic)]
+    undefined = sorted({type(f).__name__ for e in exprs for f in e.atoms(AppliedUndef)})
+    if undefined:
+        raise ExpressionTypeError(f"{where} holds the undefined function(s) {', '.join(undefined)}: lagrange cannot "
+                                  "evaluate a function it has no definition of (and never prints its name as "
+                                  "code); write it out as an expression of the variables, or, for an input, give a "
+                                  "Python callable u(t)")
+    given = set(_flat(args))
+    loose = sorted({s.name for e in exprs for s in e.free_symbols if s not in given})
+    if loose:
+        raise ExpressionTypeError(f"{where} holds symbol(s) with no value: {', '.join(loose)}; substitute their "
+                                  "values (or declare them as parameters) before evaluating it")
+    return sp.lambdify(args, expr, modules=modules, dummify=True, **kwargs)

@@ -282,3 +282,72 @@ def test_cli_values_are_not_evaluated(command, flag, name, canary):
         r = subprocess.run(args, capture_output=True, text=True, timeout=300)
         assert r.returncode != 0 and "Traceback" not in r.stderr, r.stderr[-2000:]
         assert "not a number" in r.stderr or "unknown" in r.stderr, r.stderr[-2000:]
+
+
+# --- names of user functions and symbols never become code (lagrange.safe_sympify.lambdify) ---------------------
+
+def _evil_function(canary):
+    return sp.Function(f"__import__('os').system('touch {canary}') or (lambda *a: 0)")
+
+
+def test_control_lambdify_prints_a_function_name_as_code(tmp_path):
+    """The payload is potent: sympy's own lambdify prints an undefined function's name into the code it runs
+    (in a child process)."""
+    canary = tmp_path / "control"
+    code = (f"import sympy as sp\nt = sp.Symbol('t')\nf = sp.Function({_evil_function(canary).__name__!r})\n"
+            "sp.lambdify(t, f(t), 'math')(0.0)")
+    subprocess.run([sys.executable, "-c", code], check=False, timeout=120, capture_output=True)
+    assert canary.exists()
+
+
+@pytest.mark.parametrize("which", ["hostile", "plain"])
+def test_input_value_with_an_undefined_function_is_refused(which, canary):
+    """An input's value holding an undefined function (a hostile name, or just ``f``) is refused with a
+    LagrangeError naming the function; nothing runs."""
+    x = lg.coordinates("x")
+    m, k = lg.parameters("m k")
+    u = lg.inputs("u")
+    s = lg.System([x], T=m * x.diff(t) ** 2 / 2, V=k * x**2 / 2, forces={x: u})
+    f = _evil_function(canary) if which == "hostile" else sp.Function("f")
+    with pytest.raises(LagrangeError, match="undefined function") as info:
+        s.simulate(0.1, INITIAL, PARAMS, inputs={"u": f(t)}, backend="python")
+    assert isinstance(info.value, TypeError) and f.__name__ in str(info.value)
+
+
+def test_input_value_expression_still_runs():
+    """The quiet side: an input given as an expression of t runs, and matches the same input as a callable."""
+    x = lg.coordinates("x")
+    m, k = lg.parameters("m k")
+    u = lg.inputs("u")
+    s = lg.System([x], T=m * x.diff(t) ** 2 / 2, V=k * x**2 / 2, forces={x: u})
+    opts = {"backend": "python", "rtol": 1e-10, "atol": 1e-12}
+    a = s.simulate(1.0, INITIAL, PARAMS, inputs={"u": sp.sin(3 * t)}, **opts)
+    b = s.simulate(1.0, INITIAL, PARAMS, inputs={"u": lambda tt: np.sin(3 * tt)}, **opts)
+    assert np.allclose(a.y[-1], b.y[-1], rtol=1e-8, atol=1e-10)
+
+
+def test_hostile_symbol_names_are_renamed_in_generated_code(canary):
+    """A parameter whose name is code is only a name: the generated code refers to it by position, and the
+    run gives the oscillator's closed form."""
+    x = lg.coordinates("x")
+    name = f"__import__('os').system('touch {canary}')"
+    m, k = sp.Symbol("m", positive=True), sp.Symbol(name, positive=True)
+    s = lg.System([x], T=m * x.diff(t) ** 2 / 2, V=k * x**2 / 2)
+    traj = s.simulate(0.5, INITIAL, {"m": 1.0, name: 4.0}, backend="python", rtol=1e-10, atol=1e-12)
+    assert traj.y[-1, 0] == pytest.approx(0.1 * np.cos(2 * 0.5), rel=1e-7)
+
+
+def test_safe_lambdify_refuses_loose_and_undefined_names(canary):
+    """The helper every numeric evaluation of a user expression goes through: arguments with any name work
+    (they are replaced by dummies); a symbol that is not an argument, or an undefined function, is refused
+    before code is generated."""
+    from lagrange.errors import ExpressionTypeError
+    from lagrange.safe_sympify import lambdify
+
+    evil = sp.Symbol(f"__import__('os').system('touch {canary}')")
+    y = sp.Symbol("y")
+    assert lambdify([evil], evil**2 + 1, "math")(3.0) == 10.0
+    with pytest.raises(ExpressionTypeError, match="no value"):
+        lambdify([y], y + evil, "math")
+    with pytest.raises(ExpressionTypeError, match="undefined function"):
+        lambdify([y], _evil_function(canary)(y), "math")

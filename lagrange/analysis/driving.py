@@ -33,6 +33,7 @@ from ..conventions import t
 from ..derive.lagrange import _tidy_force
 from ..errors import LagrangeError
 from ..model.coordinates import coordinate_name, is_coordinate, to_functions, to_symbols
+from ..safe_sympify import lambdify as _lambdify
 from ..safe_sympify import sympify as _sympify
 from ..simplification import is_zero, solve
 
@@ -255,7 +256,7 @@ def _numeric_equilibrium(system, unknowns, stand, lam, conds, params, guess):
     if len(conds) < len(variables):
         raise LagrangeError(f"{len(conds)} equilibrium condition(s) for {len(variables)} unknown(s) (with the "
                             "multipliers): the equilibrium is not determined")
-    f = sp.lambdify([variables], conds, "numpy")
+    f = _lambdify([variables], conds, "numpy")
     g = dict(guess or {})
     x0 = np.array([float(g.get(u, 0.0)) for u in unknowns] + [0.0] * len(lam))
 

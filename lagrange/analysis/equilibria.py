@@ -21,6 +21,7 @@ import sympy as sp
 from ..conventions import t
 from ..errors import AnalysisError, LagrangeError
 from ..model.coordinates import coordinate_name, position_symbol, to_functions
+from ..safe_sympify import lambdify as _lambdify
 from ..safe_sympify import sympify as _sympify
 from ..simplification import solve
 
@@ -111,7 +112,7 @@ def equilibria(system, params: Mapping | None = None, guess: Mapping | None = No
     free = set().union(*[c.free_symbols for c in conds]) - set(unknowns)
     if free:
         raise LagrangeError(f"missing parameter values for {sorted(map(str, free))}")
-    f = sp.lambdify([unknowns], conds, "numpy")
+    f = _lambdify([unknowns], conds, "numpy")
     x0 = np.zeros(len(unknowns))
     if guess:
         for k, v in guess.items():

@@ -60,6 +60,7 @@ import sympy as sp
 from ..codegen.source import print_expr
 from ..errors import DeclarationError, InitialConditionError, IntegrationError
 from ..records import record
+from ..safe_sympify import lambdify as _lambdify
 from ..simplification import is_zero
 
 __all__ = ["divided_difference", "PairSystem", "DGResult", "SOLVERS"]
@@ -555,9 +556,9 @@ class PairSystem:
                                Ux=print_expr(grads[0]) + " + 0.0 * x", Uy=print_expr(grads[1]) + " + 0.0 * y",
                                Uz=print_expr(grads[2]) + " + 0.0 * z",
                                **{k: print_expr(v) + " + 0.0 * x" for k, v in hes.items()})
-        self._U = sp.lambdify((X, Y, Z), U, "numpy")
+        self._U = _lambdify((X, Y, Z), U, "numpy")
         self._mod = _module(src)
-        self._phi = sp.lambdify(r, self.potential, "numpy")
+        self._phi = _lambdify(r, self.potential, "numpy")
         free = [3 * i + c for i in range(N) for c in range(3) if (i, c) not in self.fixed]
         self._free = np.array(free, dtype=np.int64)
         # momentum components the scheme conserves exactly (pair forces cancel; nothing external acts along c)

@@ -34,6 +34,7 @@ from ..model.bodies import Particle
 from ..model.coordinates import position_symbol, to_symbols, velocity_symbol
 from ..model.rigid_body import RigidBody
 from ..records import record
+from ..safe_sympify import lambdify as _lambdify
 
 __all__ = ["NotApplicable", "MassPointModel", "mass_point_model", "equimomental_offsets", "declared_symbols"]
 
@@ -211,8 +212,8 @@ def mass_point_model(system, params: Mapping) -> MassPointModel:
     data = _force_data(system, coords, qs, qds)
     syms, pvals = _bind([e for M in kin for e in M] + [e for M in data for e in sp.Matrix([M])], coords, params)
     args = (t, qs, qds, syms)
-    kin_f = sp.lambdify(args, kin, modules="numpy", cse=True)
-    data_f = sp.lambdify(args, data, modules="numpy", cse=True)
+    kin_f = _lambdify(args, kin, modules="numpy", cse=True)
+    data_f = _lambdify(args, data, modules="numpy", cse=True)
     return MassPointModel(masses, labels, len(coords), len(system.constraints),
                           tuple(c.name for c in system.constraints), E, kin_f, data_f, pvals, tuple(signed))
 

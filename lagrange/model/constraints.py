@@ -26,6 +26,7 @@ import sympy as sp
 
 from ..conventions import t
 from ..records import record
+from ..safe_sympify import lambdify as _lambdify
 from ..safe_sympify import sympify as _sympify
 from ..simplification import is_zero
 from ..symengine_bridge import FAILURES, carries, jacobian, symengine
@@ -391,7 +392,7 @@ def _frobenius_numeric(a: list, syms: list, involved: list) -> bool | None:
 
     params = sorted(set().union(*(ai.free_symbols for ai in a)) - set(syms), key=sp.default_sort_key)
     try:
-        f = sp.lambdify(syms + params, a, modules="mpmath")
+        f = _lambdify(syms + params, a, modules="mpmath")
     except Exception:  # noqa: BLE001 - anything lambdify cannot print is left to the symbolic test
         return None
     rnd = random.Random(20456)
