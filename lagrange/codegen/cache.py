@@ -188,12 +188,23 @@ def _create_secret(path: Path) -> None:
         Path(tmp).unlink(missing_ok=True)
 
 
+def _read_file(path: Path) -> bytes:
+    """The bytes of the regular file at ``path``, opened without following a symbolic link and without
+    blocking: a FIFO, device or socket found under an entry's name (which would block the run or never end)
+    or a link is refused with :class:`OSError`, never read."""
+    fd = os.open(path, os.O_RDONLY | getattr(os, "O_NOFOLLOW", 0) | getattr(os, "O_NONBLOCK", 0))
+    with os.fdopen(fd, "rb") as fh:
+        if not stat.S_ISREG(os.fstat(fh.fileno()).st_mode):
+            raise OSError(f"{path} is not a regular file")
+        return fh.read()
+
+
 def _secret(directory: Path) -> bytes:
     """The per-user key in ``directory``, created when missing."""
     path = directory / SECRET_NAME
     for _ in range(3):
         try:
-            fd = os.open(path, os.O_RDONLY | getattr(os, "O_NOFOLLOW", 0))
+            fd = os.open(path, os.O_RDONLY | getattr(os, "O_NOFOLLOW", 0) | getattr(os, "O_NONBLOCK", 0))
         except FileNotFoundError:
             _create_secret(path)
             continue
@@ -263,7 +274,7 @@ def read_verified(path: Path) -> bytes | None:
     Raises :class:`~lagrange.errors.CacheError` when the directory or its key is not private."""
     path = Path(path)
     try:
-        raw = path.read_bytes()
+        raw = _read_file(path)
     except FileNotFoundError:
         return None
     except OSError as exc:
@@ -297,14 +308,14 @@ def verify(path: Path) -> bool:
     :class:`~lagrange.errors.CacheIntegrityWarning`, once per process, when the file exists) otherwise."""
     path = Path(path)
     try:
-        data = path.read_bytes()
+        data = _read_file(path)
     except FileNotFoundError:
         return False
     except OSError as exc:
         _reject(path, f"it cannot be read ({exc})")
         return False
     try:
-        mark = _sidecar(path).read_bytes()
+        mark = _read_file(_sidecar(path))
     except OSError:
         _reject(path, "it carries no authentication tag")
         return False
