@@ -20,7 +20,14 @@ from ..errors import IntegrationError, LagrangeError, MethodError
 from ..results.trajectory import Trajectory
 from . import registry  # (auto is imported where method="auto" is resolved: a named method never loads it)
 from .options import _DEPRECATED as _UNSET
-from .options import StepOptions, check_run_options, merge_deprecated
+from .options import (
+    DEFAULT_MAX_OUTPUT_BYTES,
+    DEFAULT_MAX_STEPS,
+    StepOptions,
+    check_output_size,
+    check_run_options,
+    merge_deprecated,
+)
 from .prepare import GimbalLockWarning, check_model, initial_state, model_for, split_inputs
 from .request import RunRequest
 
@@ -90,6 +97,8 @@ def simulate(
     project_initial=_UNSET,
     step: float | StepOptions | None = None,
     loop: str = "auto",
+    max_steps: int = DEFAULT_MAX_STEPS,
+    max_output_bytes: int = DEFAULT_MAX_OUTPUT_BYTES,
 ) -> Trajectory:
     """Integrate Lagrange's equations of ``system``.
 
@@ -121,6 +130,12 @@ def simulate(
     t_eval : output times; default ``n_points`` equally spaced times (fixed-step methods record about
         ``n_points`` states instead)
     max_step : largest step of the adaptive scipy methods
+    max_steps : the most steps a run may need: a run whose ``max_step`` (adaptive) or ``step`` (fixed-step)
+        would take more over the span is refused up front (:class:`~lagrange.errors.OptionError`); an integer
+        in [1, 10⁹], default 10⁷ (:data:`~lagrange.integrate.options.DEFAULT_MAX_STEPS`)
+    max_output_bytes : the most memory the recorded states may take (output times × 2n × 8 bytes); a run
+        that would record more is refused up front; default 10⁹
+        (:data:`~lagrange.integrate.options.DEFAULT_MAX_OUTPUT_BYTES`)
     step : the step of the fixed-step geometric methods: a number or a :class:`~lagrange.integrate.options.StepOptions`
     events : scipy-style event callables ``event(t, y)`` (``terminal``/``direction`` attributes honoured)
     backend : ``python`` (default), ``numba``, ``reference`` or ``auto``; see :mod:`lagrange.codegen.numeric`
@@ -183,7 +198,8 @@ def simulate(
     step_options = _step_for(entry, step)
     events = _events(events)
     t_eval = check_run_options((t0, t1), rtol=rtol, atol=atol, n_points=n_points, max_step=max_step,
-                               t_eval=t_eval, step=step_options, adaptive=entry is None or entry.adaptive)
+                               t_eval=t_eval, step=step_options, adaptive=entry is None or entry.adaptive,
+                               max_steps=max_steps)
     # a Taylor-series method reads the whole right-hand side as one expression: a structural system gives it its
     # expanded equations (cached on disk) without deriving the structural form it would not use
     taylor = entry is not None and entry.family == "Taylor series" and model is None
@@ -197,6 +213,7 @@ def simulate(
     if eqs.planar_friction:  # friction over a surface: exact |v| (floored) or regularized sqrt(|v|² + ε²)
         eqs = NumericModel.planar_friction(eqs, fr.treatment, fr.epsilon)
     y0 = initial_state(eqs.coordinates, initial)
+    check_output_size(int(n_points) if t_eval is None else max(len(t_eval), 2), y0.size, max_output_bytes)
     params, constants, schedule = split_inputs(eqs, params, inputs, (t0, t1), y0)
     needs = _needs(eqs, events, switches, schedule) | ({"dense_output": ""} if t_eval is not None else {})
     why, bound = "", False
