@@ -104,8 +104,9 @@ def lambdify(args, expr, modules=None, *, where: str = "an expression", **kwargs
     ``lambdify`` prints an undefined function (``sympy.Function("f")``, also an ``implemented_function``) by
     its name and a symbol that is not an argument by its name, so a name such as
     ``__import__('os').system(...)`` would run as code. Both are refused up front (:class:`ExpressionTypeError`
-    naming them and ``where``); the arguments are replaced by dummies (``dummify=True``), so their names
-    never reach the code either.
+    naming them and ``where``). An argument whose name is not a plain identifier, or would shadow a name of
+    the generated code's namespace (``sin``, ``math``, a builtin), is replaced by a dummy first, so no
+    argument name changes what the code means either.
 
     >>> x = sp.Symbol("x")
     >>> lambdify([x], x**2 + 1, "math")(2.0)
@@ -131,4 +132,31 @@ def lambdify(args, expr, modules=None, *, where: str = "an expression", **kwargs
     if loose:
         raise ExpressionTypeError(f"{where} holds symbol(s) with no value: {', '.join(loose)}; substitute their "
                                   "values (or declare them as parameters) before evaluating it")
-    return sp.lambdify(args, expr, modules=modules, dummify=True, **kwargs)
+    renamed = {s: sp.Dummy() for s in given if not _plain(s)}
+    if renamed:  # (lambdify also puts each argument's name in the code's namespace: renamed before it sees them)
+        args, expr = _renamed(args, renamed), _renamed(expr, renamed)
+    return sp.lambdify(args, expr, modules=modules, **kwargs)
+
+
+def _renamed(obj, mapping: dict):
+    """``obj`` (an expression, a matrix, or lists and tuples of them) with the symbols of ``mapping`` replaced."""
+    if isinstance(obj, (list, tuple)):
+        return type(obj)(_renamed(o, mapping) for o in obj)
+    if isinstance(obj, (sp.Basic, sp.MatrixBase)):
+        return obj.xreplace(mapping)
+    return obj
+
+
+def _plain(arg) -> bool:
+    """True when ``arg`` is not a symbol, or its name is an identifier that means nothing else in the code
+    lambdify generates (no keyword, builtin, module or function of the math, numpy or mpmath namespace)."""
+    import builtins
+    import keyword
+    import math
+
+    name = getattr(arg, "name", None)
+    if not isinstance(arg, sp.Symbol) or name is None:
+        return True
+    return (name.isidentifier() and not keyword.iskeyword(name) and not name.startswith("_")
+            and name not in ("math", "numpy", "np", "mpmath", "sympy")
+            and not any(hasattr(space, name) for space in (builtins, math, np)))

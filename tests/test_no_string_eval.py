@@ -347,6 +347,8 @@ def test_safe_lambdify_refuses_loose_and_undefined_names(canary):
     evil = sp.Symbol(f"__import__('os').system('touch {canary}')")
     y = sp.Symbol("y")
     assert lambdify([evil], evil**2 + 1, "math")(3.0) == 10.0
+    shadow = sp.Symbol("sin")  # an argument named like a function of the namespace means only the argument
+    assert lambdify([shadow, y], sp.sin(y) * shadow, "math")(2.0, 0.5) == pytest.approx(2.0 * np.sin(0.5))
     with pytest.raises(ExpressionTypeError, match="no value"):
         lambdify([y], y + evil, "math")
     with pytest.raises(ExpressionTypeError, match="undefined function"):
