@@ -18,7 +18,7 @@ import sympy as sp
 
 from .errors import ExpressionTypeError, SpecError
 
-__all__ = ["sympify", "matrix", "lambdify"]
+__all__ = ["sympify", "expression", "matrix", "lambdify"]
 
 
 def sympify(value, *args, where: str = "value", **kwargs):
@@ -58,6 +58,22 @@ def sympify(value, *args, where: str = "value", **kwargs):
         raise ExpressionTypeError(f"{where}: {type(value).__name__} object is not a number or a sympy "
                                   "expression; build expressions with lagrange.coordinates and "
                                   "lagrange.parameters (its text is never parsed)") from None
+
+
+def expression(value, where: str = "value") -> sp.Basic:
+    """:func:`sympify` of a value that must be one number or expression: a list, a matrix, an array or any
+    other container is refused with :class:`ExpressionTypeError` naming ``where``.
+
+    >>> expression("1/2")
+    1/2
+    """
+    out = sympify(value, where=where)
+    if not isinstance(out, sp.Expr):
+        from .errors import shown
+
+        raise ExpressionTypeError(f"{where} = {shown(value)} is a {type(value).__name__}, not one number or "
+                                  "expression")
+    return out
 
 
 def matrix(value, where: str = "matrix") -> sp.Matrix:

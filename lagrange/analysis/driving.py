@@ -33,6 +33,7 @@ from ..conventions import t
 from ..derive.lagrange import _tidy_force
 from ..errors import LagrangeError
 from ..model.coordinates import coordinate_name, is_coordinate, to_functions, to_symbols
+from ..safe_sympify import expression as _expression
 from ..safe_sympify import lambdify as _lambdify
 from ..safe_sympify import sympify as _sympify
 from ..simplification import is_zero, solve
@@ -241,7 +242,7 @@ def static_equilibrium(system, unknowns: Sequence, params: Mapping | None = None
 
 
 def _numeric_equilibrium(system, unknowns, stand, lam, conds, params, guess):
-    by_name = {getattr(k, "name", str(k)): _sympify(v, where=f"parameter {getattr(k, 'name', k)}")
+    by_name = {getattr(k, "name", str(k)): _expression(v, where=f"parameter {getattr(k, 'name', k)}")
                for k, v in params.items()}
     variables = stand + lam
     sub = {s: by_name[s.name] for c in conds for s in c.free_symbols

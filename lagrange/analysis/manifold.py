@@ -57,6 +57,7 @@ import sympy as sp
 from ..conventions import t
 from ..errors import AnalysisError, ParameterError
 from ..model.coordinates import coordinate_name, position_symbol, velocity_symbol
+from ..safe_sympify import expression as _expression
 from ..safe_sympify import lambdify as _lambdify
 from ..safe_sympify import sympify as _sympify
 
@@ -96,7 +97,7 @@ def reference_state(system, about: Mapping | None, velocities: Mapping | None, i
                     if isinstance(val, str):  # never parse user strings here (only the spec parser does)
                         raise AnalysisError(f"the reference value of {k} must be a number or a sympy expression, "
                                             f"not the string {val!r}")
-                    out[table[k]] = _sympify(val)
+                    out[table[k]] = _expression(val, where=f"the reference value of {k}")
                     break
             else:
                 bad.append(str(k))

@@ -39,6 +39,7 @@ from ..conventions import t
 from ..errors import AnalysisError, LagrangeError
 from ..model.coordinates import coordinate_name, position_symbol, velocity_symbol
 from ..records import record
+from ..safe_sympify import expression as _expression
 from ..safe_sympify import sympify as _sympify
 from ..simplification import factor, simplify, solve
 from . import manifold
@@ -49,7 +50,7 @@ __all__ = ["equilibrium_equations", "equilibria", "Equilibrium", "linearize", "L
 
 
 def _by_name(params: Mapping | None) -> dict:
-    return {getattr(k, "name", str(k)): _sympify(v, where=f"parameter {getattr(k, 'name', k)}")
+    return {getattr(k, "name", str(k)): _expression(v, where=f"parameter {getattr(k, 'name', k)}")
             for k, v in (params or {}).items()}
 
 

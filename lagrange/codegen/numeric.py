@@ -33,7 +33,7 @@ import numpy as np
 import sympy as sp
 
 from ..derive.equations import Equations
-from ..errors import BackendError, ParameterError, SingularMassMatrixError, SpecError
+from ..errors import BackendError, ParameterError, SingularMassMatrixError, SpecError, shown
 from ..model.coordinates import coordinate_name
 from ..records import record
 from ..safe_sympify import lambdify as _lambdify
@@ -92,11 +92,15 @@ def bind_parameters(eqs: Equations, params: Mapping) -> np.ndarray:
         if n in by_name:
             try:
                 v = _number(by_name[n], f"{'input' if n in inputs else 'parameter'} {n}")
+            except OverflowError:
+                problems.append(f"{'input' if n in inputs else 'parameter'} {n} = {shown(by_name[n])} is beyond the "
+                                "floating-point range (about 1.8e308)")
+                continue
             except (TypeError, ValueError) as exc:
                 kind = "input" if n in inputs else "parameter"
                 extra = " (time-varying inputs are given to simulate)" if n in inputs else ""
                 why = f" ({exc})" if isinstance(exc, SpecError) else ""
-                problems.append(f"{kind} {n} = {by_name[n]!r} is not a number{extra}{why}")
+                problems.append(f"{kind} {n} = {shown(by_name[n])} is not a number{extra}{why}")
                 continue
             if not math.isfinite(v):
                 problems.append(f"{'input' if n in inputs else 'parameter'} {n} = {v} is not finite")

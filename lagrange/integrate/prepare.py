@@ -14,7 +14,14 @@ import numpy as np
 
 from ..codegen.numeric import NumericModel
 from ..conventions import VELOCITY_SUFFIX
-from ..errors import InitialConditionError, InputError, OptionError, ParameterError, SingularMassMatrixError
+from ..errors import (
+    InitialConditionError,
+    InputError,
+    OptionError,
+    ParameterError,
+    SingularMassMatrixError,
+    shown,
+)
 from ..model.coordinates import coordinate_name, is_coordinate
 
 __all__ = ["initial_state", "model_for", "check_initial_mass_matrix", "refuse_route", "constant_input_run",
@@ -42,8 +49,11 @@ def initial_state(coords: Sequence, initial: Mapping) -> np.ndarray:
             continue
         try:
             v = float(value)
+        except OverflowError:
+            problems.append(f"initial value of {key} = {shown(value)} is beyond the floating-point range")
+            continue
         except (TypeError, ValueError):
-            problems.append(f"initial value of {key} = {value!r} is not a number")
+            problems.append(f"initial value of {key} = {shown(value)} is not a number")
             continue
         if not math.isfinite(v):
             problems.append(f"initial value of {key} = {v} is not finite")

@@ -16,7 +16,7 @@ from collections.abc import Mapping
 import numpy as np
 
 from ..codegen.numeric import NumericModel
-from ..errors import IntegrationError, LagrangeError, MethodError
+from ..errors import IntegrationError, LagrangeError, MethodError, shown
 from ..results.trajectory import Trajectory
 from . import registry  # (auto is imported where method="auto" is resolved: a named method never loads it)
 from .options import _DEPRECATED as _UNSET
@@ -251,8 +251,8 @@ def _span(t_span) -> tuple[float, float]:
         t_span = (0.0, t_span)
     try:
         t0, t1 = (float(v) for v in t_span)
-    except (TypeError, ValueError):
-        raise IntegrationError(f"t_span must be two different finite times, got {t_span!r}") from None
+    except (TypeError, ValueError, OverflowError):
+        raise IntegrationError(f"t_span must be two different finite times, got {shown(t_span)}") from None
     if not (math.isfinite(t0) and math.isfinite(t1)) or t1 == t0:
         raise IntegrationError(f"t_span must be two different finite times, got {t_span}")
     return t0, t1

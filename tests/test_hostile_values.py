@@ -1,0 +1,69 @@
+"""Hostile and broken values given through the Python API end in a clear LagrangeError (which also subclasses
+the matching builtin), never a bare OverflowError, SympifyError or AttributeError from inside numpy, sympy or
+scipy. ``HOSTILE_VALUES`` lists them: (id, call, expected error, fragment of the message).
+"""
+
+from __future__ import annotations
+
+import warnings
+
+import numpy as np
+import pytest
+import sympy as sp
+
+import lagrange as lg
+from lagrange import t
+from lagrange.errors import LagrangeError
+
+
+def _system():
+    x = lg.coordinates("x")
+    m = lg.parameters("m")
+    return lg.System([x], T=m * x.diff(t) ** 2 / 2, V=x**2 / 2), x
+
+
+S, X = _system()
+I0 = {"x": 0.1, "x_dot": 0.0}
+HUGE = 10**5000
+
+HOSTILE_VALUES = [
+    ("param_5000_digit_int", lambda: S.simulate(0.1, I0, {"m": HUGE}, backend="python"), "floating-point range"),
+    ("initial_5000_digit_int", lambda: S.simulate(0.1, {"x": HUGE, "x_dot": 0}, {"m": 1}, backend="python"),
+     "floating-point range"),
+    ("t_end_5000_digit_int", lambda: S.simulate(HUGE, I0, {"m": 1}, backend="python"), "finite times"),
+    ("param_string_1e99999", lambda: S.simulate(0.1, I0, {"m": "1e" + "9" * 5000}, backend="python"),
+     "not a number"),
+    ("param_string_5000_digit_rational",
+     lambda: S.simulate(0.1, I0, {"m": "1" + "0" * 5000 + "/3"}, backend="python"), "not a number"),
+    ("param_list", lambda: S.simulate(0.1, I0, {"m": [1, 2]}, backend="python"), "not a number"),
+    ("initial_list", lambda: S.simulate(0.1, {"x": [0.1, 1], "x_dot": 0}, {"m": 1}, backend="python"),
+     "not a number"),
+    ("t_eval_empty", lambda: S.simulate(0.1, I0, {"m": 1}, backend="python", t_eval=[]), "t_eval is empty"),
+    ("t_eval_empty_array", lambda: S.simulate(0.1, I0, {"m": 1}, backend="python", t_eval=np.array([])),
+     "t_eval is empty"),
+    ("max_step_1e-9", lambda: S.simulate(1.0, I0, {"m": 1}, backend="python", max_step=1e-9), "max_steps"),
+    ("normal_modes_list_param", lambda: lg.normal_modes(lg.linearize(S, {X: 0}), {"m": [1, 2]}),
+     "not one number"),
+    ("equilibria_list_param", lambda: lg.equilibria(S, {"m": [1, 2]}), "not one number"),
+    ("linearize_list_about", lambda: lg.linearize(S, {X: [0, 1]}), "not one number"),
+    ("declared_nan_potential", lambda: lg.System([X], T=S.T, V=sp.nan * X), "not a finite number"),
+    ("declared_zoo_kinetic", lambda: lg.System([X], T=S.T + sp.zoo, V=0), "not a finite number"),
+]
+
+
+@pytest.mark.parametrize(("name", "call", "fragment"), HOSTILE_VALUES, ids=[h[0] for h in HOSTILE_VALUES])
+def test_hostile_value_is_a_clear_lagrange_error(name, call, fragment):
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        with pytest.raises(LagrangeError) as info:
+            call()
+    assert isinstance(info.value, (ValueError, TypeError, RuntimeError, PermissionError)), type(info.value)
+    assert fragment in str(info.value) and len(str(info.value)) < 2000, str(info.value)[:500]
+
+
+def test_exact_values_with_many_digits_still_run():
+    """The quiet side: a 5,000-digit rational that is a normal number is accepted (m = 1 + 10⁻⁵⁰⁰⁰ ≈ 1), and the
+    run is the oscillator's cos t."""
+    m = sp.Rational(10**5000 + 1, 10**5000)
+    sol = S.simulate(1.0, {"x": 1.0, "x_dot": 0.0}, {"m": m}, backend="python", rtol=1e-10, atol=1e-12)
+    assert sol[X][-1] == pytest.approx(np.cos(1.0), rel=1e-7)
