@@ -35,6 +35,7 @@ from ..model.coordinates import position_symbol, to_symbols, velocity_symbol
 from ..model.rigid_body import RigidBody
 from ..records import record
 from ..safe_sympify import lambdify as _lambdify
+from ..safe_sympify import sympify as _sympify
 
 __all__ = ["NotApplicable", "MassPointModel", "mass_point_model", "equimomental_offsets", "declared_symbols"]
 
@@ -117,7 +118,7 @@ class MassPointModel:
 
 
 def _numeric(expr, values: dict, what: str) -> float:
-    e = sp.sympify(expr).xreplace(values)
+    e = _sympify(expr).xreplace(values)
     try:
         return float(e)
     except TypeError:
@@ -168,13 +169,13 @@ def _selection(points, B) -> tuple[np.ndarray, np.ndarray, tuple]:
 
 def _bind(exprs, coords, params: Mapping) -> tuple[list, tuple]:
     qsyms = {position_symbol(q) for q in coords} | {velocity_symbol(q) for q in coords}
-    free = set().union(*(sp.sympify(e).free_symbols for e in exprs)) - qsyms - {t}
+    free = set().union(*(_sympify(e).free_symbols for e in exprs)) - qsyms - {t}
     by_name = {(k.name if isinstance(k, sp.Symbol) else str(k)): v for k, v in params.items()}
     syms = sorted(free, key=lambda s: s.name)
     missing = [s.name for s in syms if s.name not in by_name]
     if missing:
         raise ParameterError(f"missing value(s) for parameter(s) {', '.join(missing)}")
-    return syms, tuple(float(sp.sympify(by_name[s.name])) for s in syms)
+    return syms, tuple(float(_sympify(by_name[s.name])) for s in syms)
 
 
 def mass_point_model(system, params: Mapping) -> MassPointModel:
@@ -228,7 +229,7 @@ def declared_symbols(system) -> set:
         exprs += list(b.position_vectors()) + [getattr(b, "mass", 0)]
         if isinstance(b, RigidBody):
             exprs += [b.inertia, b.com, b.R]
-    out = set().union(*(sp.sympify(e).free_symbols for e in exprs))
+    out = set().union(*(_sympify(e).free_symbols for e in exprs))
     return {s for s in out if s != t and not s.name.startswith("delta_")}
 
 
@@ -237,7 +238,7 @@ def _all_symbols(system) -> set:
     for b in system.bodies:
         for attr in ("mass", "inertia", "com"):
             if hasattr(b, attr):
-                out |= sp.sympify(getattr(b, attr)).free_symbols
+                out |= _sympify(getattr(b, attr)).free_symbols
     return out
 
 

@@ -35,6 +35,7 @@ from ..conventions import t as T_SYM
 from ..errors import DeclarationError
 from ..records import record
 from ..safe_sympify import lambdify as _lambdify
+from ..safe_sympify import sympify as _sympify
 from .kkt import CONSISTENCY_TOL, LeastConstraintSolution, solve_least_constraint
 
 __all__ = [
@@ -112,7 +113,7 @@ class _Symbolic:
     """Numeric φ, ∇φ, ∇²φ, ∂_t∇φ, ∂_tφ, ∂_ttφ of a holonomic φ(u, t) over variables u."""
 
     def __init__(self, phi, variables, label):
-        phi = sp.sympify(phi)
+        phi = _sympify(phi)
         stray = phi.free_symbols - set(variables) - {T_SYM}
         if stray:
             raise DeclarationError(f"{label}: φ = {phi} contains {', '.join(sorted(map(str, stray)))}, which are "
