@@ -137,11 +137,13 @@ def _api_entries():
     values, with the payload ``v`` in one such argument: ``(name, call(v))``. A vector gets it as its first
     component, a matrix as its first entry, a mapping as a value."""
     from lagrange.model.rotations import rot_x, rot_y
+    from lagrange.printing import format_expression, tidy_trig
 
     x, y = lg.coordinates("x y")
     m, k = lg.parameters("m k")
     osc = lg.System([x], T=m * x.diff(t) ** 2 / 2, V=k * x**2 / 2)
     body = lg.RigidBody(1, (1, 1, 1), orientation=lg.rot_z(x))
+    masses = lg.System([x], bodies=[lg.Particle(m, (x,))], V=k * x**2 / 2)
 
     def vec(v):
         return [v, 0, 0]
@@ -195,6 +197,9 @@ def _api_entries():
         "to_symbols": lambda v: lg.to_symbols(v, [x]),
         "to_functions": lambda v: lg.to_functions(v, [x]),
         "latex": lambda v: lg.latex(v),
+        "tidy_trig": lambda v: tidy_trig(v),
+        "format_expression": lambda v: format_expression(v),
+        "check_gauss": lambda v: lg.check_gauss(masses, {"m": v, "k": 1}, samples=1),
         "pretty": lambda v: lg.pretty(v),
         "linearize.about": lambda v: lg.linearize(osc, {x: v}),
         "driving_forces": lambda v: lg.driving_forces(osc, {x: v}),

@@ -29,7 +29,7 @@ import numpy as np
 import sympy as sp
 
 from ..conventions import t
-from ..errors import ParameterError
+from ..errors import LagrangeError, ParameterError, shown
 from ..model.bodies import Particle
 from ..model.coordinates import position_symbol, to_symbols, velocity_symbol
 from ..model.rigid_body import RigidBody
@@ -175,7 +175,18 @@ def _bind(exprs, coords, params: Mapping) -> tuple[list, tuple]:
     missing = [s.name for s in syms if s.name not in by_name]
     if missing:
         raise ParameterError(f"missing value(s) for parameter(s) {', '.join(missing)}")
-    return syms, tuple(float(_sympify(by_name[s.name])) for s in syms)
+    return syms, tuple(_float(by_name[s.name], s.name) for s in syms)
+
+
+def _float(value, name: str) -> float:
+    """The number a parameter value stands for (a string is read by the spec parser, never evaluated);
+    ParameterError otherwise."""
+    try:
+        return float(_sympify(value, where=f"parameter {name}"))
+    except LagrangeError:
+        raise
+    except (TypeError, ValueError, OverflowError):
+        raise ParameterError(f"parameter {name} = {shown(value)} is not a number") from None
 
 
 def mass_point_model(system, params: Mapping) -> MassPointModel:
@@ -197,7 +208,7 @@ def mass_point_model(system, params: Mapping) -> MassPointModel:
                             "here covers ideal constraints)")
     coords = system.coordinates
     by_name = {(k.name if isinstance(k, sp.Symbol) else str(k)): v for k, v in params.items()}
-    values = {s: sp.Float(float(by_name[s.name])) for s in _all_symbols(system) if s.name in by_name}
+    values = {s: sp.Float(_float(by_name[s.name], s.name)) for s in _all_symbols(system) if s.name in by_name}
     base, points, signed = _bodies(system, values)
     if not points:
         raise NotApplicable("no massive particle or rigid body")
