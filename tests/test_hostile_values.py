@@ -67,3 +67,21 @@ def test_exact_values_with_many_digits_still_run():
     m = sp.Rational(10**5000 + 1, 10**5000)
     sol = S.simulate(1.0, {"x": 1.0, "x_dot": 0.0}, {"m": m}, backend="python", rtol=1e-10, atol=1e-12)
     assert sol[X][-1] == pytest.approx(np.cos(1.0), rel=1e-7)
+
+
+def test_ensemble_step_and_output_limits():
+    """integrate_ensemble applies the same limits: max_step=1e-9 over a span of 1 is refused naming max_steps,
+    so is output beyond max_output_bytes; within them it runs (x(π) = cos(√k π) x0)."""
+    from lagrange.errors import OptionError
+    from lagrange.sweep import integrate_ensemble
+
+    x = lg.coordinates("x")
+    k = lg.parameters("k")
+    osc = lg.System([x], bodies=[lg.Particle(1, (x,))], V=k * x**2 / 2).compile({"k": 1.0}, backend="python")
+    with pytest.raises(OptionError, match="max_steps"):
+        integrate_ensemble(osc, 1.0, [[1.0, 0.0]], max_step=1e-9)
+    with pytest.raises(OptionError, match="max_output_bytes"):
+        integrate_ensemble(osc, 1.0, [[1.0, 0.0]] * 4, n_points=1000, max_output_bytes=4 * 1000 * 2 * 8 - 1)
+    res = integrate_ensemble(osc, np.pi, [[1.0, 0.0], [2.0, 0.0]], P=[[1.0], [4.0]], t_eval=[np.pi],
+                             max_step=0.1, max_steps=100, max_output_bytes=2 * 2 * 8)
+    assert np.allclose(res.y[:, -1, 0], [-1.0, 2.0], atol=1e-7)

@@ -27,7 +27,8 @@ from ..errors import MethodError, OptionError
 from ..records import record
 
 __all__ = ["FrictionOptions", "Stabilization", "StepOptions", "FRICTIONS", "STABILIZATIONS", "MAX_POINTS",
-           "MAX_STEPS", "DEFAULT_MAX_STEPS", "DEFAULT_MAX_OUTPUT_BYTES", "check_run_options", "check_output_size",
+           "MAX_STEPS", "DEFAULT_MAX_STEPS", "DEFAULT_MAX_OUTPUT_BYTES", "check_run_options", "check_step_count",
+           "check_output_size",
            "merge_deprecated", "as_friction", "as_stabilization", "as_step"]
 
 FRICTIONS = ("events", "regularize")
@@ -180,6 +181,16 @@ def _count(option: str, value, limit: int) -> int:
     return int(value)
 
 
+def check_step_count(span: float, h: float, option: str, max_steps) -> None:
+    """OptionError when steps of at most ``h`` (the option named ``option``: ``max_step`` or ``step``) would
+    need more than ``max_steps`` (an integer in [1, MAX_STEPS], checked too) over ``span``."""
+    limit = _count("max_steps", max_steps, MAX_STEPS)
+    if span / h > limit:
+        raise OptionError(f"{option}={h!r} would take {span / h:.3g} steps over the span {span:g}, more than the "
+                          f"limit max_steps={limit:,}: use {option} >= {span / limit:.3g}, or raise max_steps (up "
+                          f"to {MAX_STEPS:.0e})")
+
+
 def check_output_size(n_times: int, n_state: int, max_output_bytes) -> None:
     """OptionError when ``n_times`` recorded states of ``n_state`` floats would exceed ``max_output_bytes``
     (a positive integer: refused too when it is not one)."""
@@ -212,14 +223,9 @@ def check_run_options(t_span, *, rtol, atol, n_points, max_step, t_eval, step: S
         if isinstance(max_step, bool) or not isinstance(max_step, int | float | np.integer | np.floating) \
                 or math.isnan(max_step) or max_step <= 0:
             raise OptionError(f"max_step must be a number > 0 (inf: no limit), got {max_step!r}")
-        if span / float(max_step) > limit:
-            raise OptionError(f"max_step={max_step!r} would take more steps than the limit max_steps={limit:,} "
-                              f"over the span {span:g} (span / max_step = {span / float(max_step):.3g}): use "
-                              f"max_step >= {span / limit:.3g}, or raise max_steps (up to {MAX_STEPS:.0e})")
-    if step is not None and span / step.h > limit:
-        raise OptionError(f"step={step.h!r} would take {span / step.h:.3g} steps over the span {span:g}, more than "
-                          f"the limit max_steps={limit:,}: use step >= {span / limit:.3g}, or raise max_steps (up to "
-                          f"{MAX_STEPS:.0e})")
+        check_step_count(span, float(max_step), "max_step", limit)
+    if step is not None:
+        check_step_count(span, step.h, "step", limit)
     if isinstance(n_points, bool) or not isinstance(n_points, int | np.integer):
         raise OptionError(f"n_points must be an integer, got {n_points!r}")
     if not 2 <= n_points <= MAX_POINTS:
