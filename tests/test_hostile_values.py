@@ -46,6 +46,8 @@ HOSTILE_VALUES = [
      "not one number"),
     ("equilibria_list_param", lambda: lg.equilibria(S, {"m": [1, 2]}), "not one number"),
     ("linearize_list_about", lambda: lg.linearize(S, {X: [0, 1]}), "not one number"),
+    ("sweep_5000_digit_int", lambda: lg.sweep(S, {"m": [HUGE]}, t_end=0.1, initial=I0, params={"m": 1}, workers=0,
+                                              progress=False), "floating-point range"),
     ("declared_nan_potential", lambda: lg.System([X], T=S.T, V=sp.nan * X), "not a finite number"),
     ("declared_zoo_kinetic", lambda: lg.System([X], T=S.T + sp.zoo, V=0), "not a finite number"),
 ]
