@@ -1,4 +1,4 @@
-"""``sympify`` that never evaluates a string.
+"""``sympify`` that never evaluates a string, and ``lambdify`` that never prints a user's name as code.
 
 ``sympy.sympify`` of a string is ``eval``: ``sympify("__import__('os').system(...)")`` runs the command. Every
 place where lagrange turns a user's value into a sympy object goes through :func:`sympify` instead: a string
@@ -6,7 +6,12 @@ is read by the spec parser (:func:`lagrange.spec.expressions.parse_expression`, 
 evaluates nothing) as an expression of numbers only (``"2*pi"``, ``"1/3"``), and anything else goes through
 ``sympy.sympify(..., strict=True)``, which converts numbers, sympy objects and objects with ``_sympy_``
 without ever parsing text. Expressions with names are built with sympy (:func:`lagrange.coordinates`,
-:func:`lagrange.parameters`) or written in a TOML spec, whose parser knows the names.
+:func:`lagrange.parameters`) or written in a TOML spec, whose parser knows the names. :func:`matrix` and
+:func:`expression` do the same for a matrix and for a single value.
+
+``sympy.lambdify`` prints undefined functions and stray symbols by name into the code it runs;
+:func:`lambdify` refuses them and renames arguments whose names are not plain, so every numeric evaluation of
+a user's expression goes through it.
 """
 
 from __future__ import annotations
@@ -114,8 +119,8 @@ def _flat(args) -> list:
 
 
 def lambdify(args, expr, modules=None, *, where: str = "an expression", **kwargs):
-    """``sympy.lambdify(args, expr, modules, dummify=True, **kwargs)`` after checking that no name from the
-    user's expressions is printed into the generated code.
+    """``sympy.lambdify(args, expr, modules, **kwargs)`` after making sure that no name from the user's
+    expressions is printed into the generated code as code.
 
     ``lambdify`` prints an undefined function (``sympy.Function("f")``, also an ``implemented_function``) by
     its name and a symbol that is not an argument by its name, so a name such as
