@@ -87,3 +87,22 @@ def test_ensemble_step_and_output_limits():
     res = integrate_ensemble(osc, np.pi, [[1.0, 0.0], [2.0, 0.0]], P=[[1.0], [4.0]], t_eval=[np.pi],
                              max_step=0.1, max_steps=100, max_output_bytes=2 * 2 * 8)
     assert np.allclose(res.y[:, -1, 0], [-1.0, 2.0], atol=1e-7)
+
+
+def test_scipy_run_stops_at_max_steps_with_its_partial_trajectory():
+    """A run whose own steps are many (a stiff spring over a long span, no max_step to refuse up front) stops
+    at max_steps with an IntegrationError naming it and carrying the trajectory so far, which follows the
+    closed form x = cos(ωt); with room it finishes."""
+    from lagrange.errors import IntegrationError
+
+    x = lg.coordinates("x")
+    k = lg.parameters("k")
+    s = lg.System([x], bodies=[lg.Particle(1, (x,))], V=k * x**2 / 2)
+    opts = {"backend": "python", "rtol": 1e-10, "atol": 1e-12, "method": "DOP853"}
+    with pytest.raises(IntegrationError, match="max_steps=200") as info:
+        s.simulate(10.0, {"x": 1.0, "x_dot": 0.0}, {"k": 1e4}, max_steps=200, **opts)
+    p = info.value.partial
+    assert p is not None and 0 < info.value.t < 10.0 and len(p.t) > 2
+    assert np.allclose(p[x], np.cos(100.0 * p.t), atol=1e-6)
+    sol = s.simulate(0.5, {"x": 1.0, "x_dot": 0.0}, {"k": 1e4}, max_steps=10_000, **opts)
+    assert sol[x][-1] == pytest.approx(np.cos(50.0), abs=1e-7)

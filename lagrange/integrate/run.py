@@ -130,9 +130,11 @@ def simulate(
     t_eval : output times; default ``n_points`` equally spaced times (fixed-step methods record about
         ``n_points`` states instead)
     max_step : largest step of the adaptive scipy methods
-    max_steps : the most steps a run may need: a run whose ``max_step`` (adaptive) or ``step`` (fixed-step)
-        would take more over the span is refused up front (:class:`~lagrange.errors.OptionError`); an integer
-        in [1, 10⁹], default 10⁷ (:data:`~lagrange.integrate.options.DEFAULT_MAX_STEPS`)
+    max_steps : the most steps a run may take: a run whose ``max_step`` (adaptive) or ``step`` (fixed-step)
+        would take more over the span is refused up front (:class:`~lagrange.errors.OptionError`), and a scipy
+        run that takes more anyway (tiny steps of its own choosing) stops there with an
+        :class:`~lagrange.errors.IntegrationError` carrying the trajectory so far; an integer in [1, 10⁹],
+        default 10⁷ (:data:`~lagrange.integrate.options.DEFAULT_MAX_STEPS`)
     max_output_bytes : the most memory the recorded states may take (output times × 2n × 8 bytes); a run
         that would record more is refused up front; default 10⁹
         (:data:`~lagrange.integrate.options.DEFAULT_MAX_OUTPUT_BYTES`)
@@ -241,7 +243,7 @@ def simulate(
                      initial=initial, params=params, constants=constants, schedule=schedule, model=model,
                      backend=backend, loop=loop, rtol=rtol, atol=atol, max_step=max_step, n_points=int(n_points),
                      t_eval=t_eval, events=events, switches=switches, friction=fr, stabilization=st,
-                     step=step_options, model_bound=bound)
+                     step=step_options, model_bound=bound, max_steps=int(max_steps))
     return entry.runner()(req)
 
 

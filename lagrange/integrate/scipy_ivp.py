@@ -188,7 +188,7 @@ def _run_scipy(req: RunRequest, model: NumericModel, y0, t_eval, stabilization: 
     z0 = y0 if conservative else np.append(y0, 0.0)
     jac = _jacobian(model, method, conservative)
     all_events = list(req.events) + _contact_events(model)
-    log = StepLog(t_eval)
+    log = StepLog(t_eval, max_steps=req.max_steps)
     kwargs = dict(method=recording(method, log), rtol=req.rtol, atol=req.atol, max_step=req.max_step)
     if jac is not None:
         kwargs["jac"] = jac
