@@ -106,3 +106,20 @@ def test_scipy_run_stops_at_max_steps_with_its_partial_trajectory():
     assert np.allclose(p[x], np.cos(100.0 * p.t), atol=1e-6)
     sol = s.simulate(0.5, {"x": 1.0, "x_dot": 0.0}, {"k": 1e4}, max_steps=10_000, **opts)
     assert sol[x][-1] == pytest.approx(np.cos(50.0), abs=1e-7)
+
+
+@pytest.mark.parametrize("route", ["compiled", "taylor", "heyoka"])
+def test_every_adaptive_route_honours_max_steps(route):
+    """The compiled DOP853 loop, the Taylor method and heyoka stop at the max_steps given to simulate (an
+    IntegrationError with the partial trajectory), not at their own default of 10⁷."""
+    from lagrange.errors import IntegrationError
+
+    kw = {"compiled": {"backend": "numba", "loop": "compiled"}, "taylor": {"method": "taylor"},
+          "heyoka": {"method": "heyoka"}}[route]
+    pytest.importorskip({"compiled": "numba", "taylor": "numpy", "heyoka": "heyoka"}[route])
+    x = lg.coordinates("x")
+    k = lg.parameters("k")
+    s = lg.System([x], bodies=[lg.Particle(1, (x,))], V=k * x**2 / 2)
+    with pytest.raises(IntegrationError) as info:
+        s.simulate(10.0, {"x": 1.0, "x_dot": 0.0}, {"k": 1e4}, max_steps=50, rtol=1e-10, atol=1e-12, **kw)
+    assert info.value.partial is not None and info.value.t < 1.0

@@ -169,7 +169,8 @@ def run(req: RunRequest) -> Trajectory:
     if use_compiled:  # its IntegrationError already carries `partial` (lagrange.integrate.compiled)
         try:
             return integrate_compiled(model, method, (t0, t1), y0, t_eval, rtol=req.rtol, atol=req.atol,
-                                      max_step=req.max_step, label=f"{method} ({'; '.join(notes)})")
+                                      max_step=req.max_step, label=f"{method} ({'; '.join(notes)})",
+                                      max_steps=req.max_steps)
         except ValueError as exc:  # bad t_eval or tolerances, worded as scipy words them
             raise IntegrationError(f"integration failed: {exc}") from exc
     return _run_scipy(req, model, y0, t_eval, stabilization, notes, initial_report)
