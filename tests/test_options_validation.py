@@ -167,6 +167,10 @@ BAD_SPEC = [
     ({"atol": -1.0}, "atol"),
     ({"step": 1e-300, "method": "gl4"}, None),  # refused by simulate (the step count), below
     ({"max_step": 1e-12}, None),
+    ({"max_steps": 0}, "max_steps"),
+    ({"max_steps": 2.5}, "max_steps"),
+    ({"max_output_bytes": -1}, "max_output_bytes"),
+    ({"max_step": 1e-3, "max_steps": 100}, None),  # refused by simulate (the step count), below
 ]
 
 

@@ -78,7 +78,8 @@ _TOML_KEYS = {"name", "description", "coordinates", "parameters", "T", "V", "P",
 _PARTICLE_KEYS = {"mass", "position", "name"}
 #: ``[simulate]`` keys: ``t_end`` and the keyword options of :func:`lagrange.integrate.run.simulate` that are data
 _SIMULATE_KEYS = {"t_end", "method", "rtol", "atol", "n_points", "max_step", "backend", "friction",
-                  "friction_epsilon", "stabilization", "baumgarte", "project_initial", "step", "loop"}
+                  "friction_epsilon", "stabilization", "baumgarte", "project_initial", "step", "loop", "max_steps",
+                  "max_output_bytes"}
 #: particle positions are squared in T, so they get a tighter limit on their multiplied-out size
 _POSITION_TERMS = 100
 MAX_SPEC_BYTES = 1_000_000
