@@ -235,3 +235,23 @@ class AccuracyWarning(LagrangeWarning):
 
 
 __all__ += ["AccuracyWarning"]
+
+
+class ExpressionTypeError(LagrangeError, TypeError):
+    """A value given where an expression is expected is neither a number, a sympy object, a container of
+    them nor a string of numbers (:mod:`lagrange.safe_sympify`): it is refused, never converted through its
+    text (sympy's own fallback parses ``str(value)``, which is ``eval``)."""
+
+
+__all__ += ["ExpressionTypeError", "shown"]
+
+
+def shown(value, limit: int = 80) -> str:
+    """``repr(value)`` for an error message, cut to about ``limit`` characters; never raises (the repr of an
+    integer of more than 4,300 digits does: then its size is given)."""
+    try:
+        text = repr(value)
+    except ValueError:
+        text = f"<an integer of {value.bit_length() * 0.30103:.0f} digits>" if isinstance(value, int) else \
+            f"<a {type(value).__name__}>"
+    return text if len(text) <= limit else text[: limit - 5] + " ...>"

@@ -23,6 +23,7 @@ from ._text import printable
 from .budget import PRINT_NODES, check, fits
 from .conventions import t
 from .errors import SymbolicTimeoutError
+from .safe_sympify import sympify as _sympify
 from .simplification import run_bounded
 
 __all__ = ["WIDTH", "format_equations", "format_expression", "format_momenta", "display_equations", "tidy_trig",
@@ -131,7 +132,7 @@ def tidy_trig(expr, *, limit: int = TIDY_LIMIT, seconds: float = TIDY_SECONDS):
     >>> tidy_trig(sp.sin(a)*sp.sin(b) + sp.cos(a)*sp.cos(b) + sp.sin(a)**2 + sp.cos(a)**2)
     cos(a(t) - b(t)) + 1
     """
-    expr = sp.sympify(expr)
+    expr = _sympify(expr, where="the expression to print")
     if isinstance(expr, sp.Equality):
         return sp.Eq(tidy_trig(expr.lhs, limit=limit, seconds=seconds),
                      tidy_trig(expr.rhs, limit=limit, seconds=seconds), evaluate=False)
@@ -187,7 +188,7 @@ def format_expression(expr, width: int = WIDTH, indent: str = "") -> str:
     is ever longer than ``width``. ``indent`` prefixes every line.
     """
     printer = _DotPretty({"use_unicode": True, "wrap_line": False})
-    expr = sp.sympify(expr)
+    expr = _sympify(expr, where="the expression to print")
     check(expr, stage="printing", what="the equation", max_nodes=PRINT_NODES)
     sides = [expr.lhs, expr.rhs] if isinstance(expr, sp.Equality) else [expr]
     room = width - len(indent) - len(_INDENT) - 2

@@ -87,6 +87,17 @@ BAD_API = [
     ({"method": "taylor", "events": [lambda t, y: y[0]]}, "events"),
     ({"events": [3]}, "events"),
     ({"backend": "fortran"}, "backend"),
+    # step-count and output-size limits (public options, validated), and an empty t_eval
+    ({"max_step": 1e-9}, "max_steps"),
+    ({"method": "gl4", "step": 1e-7}, "max_steps"),
+    ({"max_steps": 0}, "max_steps"),
+    ({"max_steps": 10**10}, "max_steps"),
+    ({"max_steps": 2.5}, "max_steps"),
+    ({"max_steps": 100, "max_step": 0.05}, "max_steps"),
+    ({"max_output_bytes": 1000}, "max_output_bytes"),
+    ({"max_output_bytes": 0}, "max_output_bytes"),
+    ({"max_output_bytes": "1e9"}, "max_output_bytes"),
+    ({"t_eval": []}, "t_eval"),
 ]
 
 
@@ -101,6 +112,17 @@ def test_bad_api_option_is_a_lagrange_error_naming_it(options, names):
     s, _ = _oscillator()
     with pytest.raises(LagrangeError, match=names):
         s.simulate(10, X0, OSC, **options)
+
+
+def test_step_and_output_limits_pass_quietly_within_them():
+    """The quiet side of the limits: a run inside max_steps and max_output_bytes runs, and gives the
+    oscillator's closed form (x = cos 2t)."""
+    s, x = _oscillator()
+    sol = s.simulate(10, X0, OSC, max_step=0.2, max_steps=100, n_points=11, max_output_bytes=11 * 2 * 8,
+                     rtol=1e-10, atol=1e-12)
+    assert np.allclose(sol[x], np.cos(2.0 * sol.t), atol=1e-7)
+    fixed = s.simulate(10, X0, OSC, method="gl4", step=0.01, max_steps=1000)
+    assert abs(fixed[x][-1] - np.cos(20.0)) < 1e-5
 
 
 @pytest.mark.parametrize(("build", "names"), [
@@ -145,6 +167,10 @@ BAD_SPEC = [
     ({"atol": -1.0}, "atol"),
     ({"step": 1e-300, "method": "gl4"}, None),  # refused by simulate (the step count), below
     ({"max_step": 1e-12}, None),
+    ({"max_steps": 0}, "max_steps"),
+    ({"max_steps": 2.5}, "max_steps"),
+    ({"max_output_bytes": -1}, "max_output_bytes"),
+    ({"max_step": 1e-3, "max_steps": 100}, None),  # refused by simulate (the step count), below
 ]
 
 

@@ -33,7 +33,9 @@ from ..conventions import t
 from ..derive.lagrange import _tidy_force
 from ..errors import LagrangeError
 from ..limits import bounded
-from ..model.coordinates import coordinate_name, to_functions, to_symbols
+from ..model.coordinates import coordinate_name, is_coordinate, to_functions, to_symbols
+from ..safe_sympify import expression as _expression
+from ..safe_sympify import lambdify as _lambdify
 from ..safe_sympify import sympify as _sympify
 from ..simplification import is_zero, solve
 
@@ -115,6 +117,8 @@ def driving_forces(system, motion: Mapping) -> dict:
     LagrangeError
         A coordinate's motion is missing, the motion violates a constraint, or a constraint is rough.
     """
+    motion = {q: _sympify(v, where=f"motion of {coordinate_name(q) if is_coordinate(q) else q}")
+              for q, v in motion.items()}
     missing = [coordinate_name(q) for q in system.coordinates if q not in motion]
     if missing:
         raise LagrangeError(f"the prescribed motion must give every coordinate; missing {', '.join(missing)}")
@@ -242,7 +246,7 @@ def static_equilibrium(system, unknowns: Sequence, params: Mapping | None = None
 
 
 def _numeric_equilibrium(system, unknowns, stand, lam, conds, params, guess):
-    by_name = {getattr(k, "name", str(k)): _sympify(v, where=f"parameter {getattr(k, 'name', k)}")
+    by_name = {getattr(k, "name", str(k)): _expression(v, where=f"parameter {getattr(k, 'name', k)}")
                for k, v in params.items()}
     variables = stand + lam
     sub = {s: by_name[s.name] for c in conds for s in c.free_symbols
@@ -257,7 +261,7 @@ def _numeric_equilibrium(system, unknowns, stand, lam, conds, params, guess):
     if len(conds) < len(variables):
         raise LagrangeError(f"{len(conds)} equilibrium condition(s) for {len(variables)} unknown(s) (with the "
                             "multipliers): the equilibrium is not determined")
-    f = sp.lambdify([variables], conds, "numpy")
+    f = _lambdify([variables], conds, "numpy")
     g = dict(guess or {})
     x0 = np.array([float(g.get(u, 0.0)) for u in unknowns] + [0.0] * len(lam))
 

@@ -22,6 +22,8 @@ from ..conventions import t
 from ..errors import AnalysisError, LagrangeError
 from ..limits import bounded
 from ..model.coordinates import coordinate_name, position_symbol, to_functions
+from ..safe_sympify import expression as _expression
+from ..safe_sympify import lambdify as _lambdify
 from ..safe_sympify import sympify as _sympify
 from ..simplification import solve
 
@@ -105,7 +107,7 @@ def equilibria(system, params: Mapping | None = None, guess: Mapping | None = No
             q = {c: s.get(position_symbol(c), position_symbol(c)) for c in system.coordinates}
             out.append(Equilibrium(q, {names[lm]: s.get(lm, lm) for lm in eqs.multipliers}))
         return out
-    by_name = {getattr(k, "name", str(k)): _sympify(v, where=f"parameter {getattr(k, 'name', k)}")
+    by_name = {getattr(k, "name", str(k)): _expression(v, where=f"parameter {getattr(k, 'name', k)}")
                for k, v in (params or {}).items()}
     sub = {s: by_name[s.name] for s in eqs.parameters if s.name in by_name}
     t0 = float(by_name.get("t", 0.0))
@@ -113,7 +115,7 @@ def equilibria(system, params: Mapping | None = None, guess: Mapping | None = No
     free = set().union(*[c.free_symbols for c in conds]) - set(unknowns)
     if free:
         raise LagrangeError(f"missing parameter values for {sorted(map(str, free))}")
-    f = sp.lambdify([unknowns], conds, "numpy")
+    f = _lambdify([unknowns], conds, "numpy")
     x0 = np.zeros(len(unknowns))
     if guess:
         for k, v in guess.items():

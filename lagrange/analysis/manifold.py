@@ -57,6 +57,8 @@ import sympy as sp
 from ..conventions import t
 from ..errors import AnalysisError, ParameterError
 from ..model.coordinates import coordinate_name, position_symbol, velocity_symbol
+from ..safe_sympify import expression as _expression
+from ..safe_sympify import lambdify as _lambdify
 from ..safe_sympify import sympify as _sympify
 
 __all__ = ["reference_state", "numeric_blocks", "symbolic_blocks", "choose_dependent", "reduce"]
@@ -95,7 +97,7 @@ def reference_state(system, about: Mapping | None, velocities: Mapping | None, i
                     if isinstance(val, str):  # never parse user strings here (only the spec parser does)
                         raise AnalysisError(f"the reference value of {k} must be a number or a sympy expression, "
                                             f"not the string {val!r}")
-                    out[table[k]] = _sympify(val)
+                    out[table[k]] = _expression(val, where=f"the reference value of {k}")
                     break
             else:
                 bad.append(str(k))
@@ -202,7 +204,7 @@ def _flat(args, mats):
     arguments, complex for complex ones."""
     shapes = [X.shape for X in mats]
     exprs = [e for X in mats for e in X]
-    fn = sp.lambdify(args, exprs, modules="numpy", cse=True) if exprs else None
+    fn = _lambdify(args, exprs, modules="numpy", cse=True) if exprs else None
 
     def call(*a):
         cplx = any(np.iscomplexobj(x) for x in a)

@@ -42,6 +42,7 @@ from ..errors import AnalysisError, LagrangeError
 from ..limits import bounded
 from ..model.coordinates import coordinate_name, position_symbol, velocity_symbol
 from ..records import record
+from ..safe_sympify import expression as _expression
 from ..safe_sympify import sympify as _sympify
 from ..simplification import factor, is_zero, simplify, solve
 from . import manifold
@@ -52,7 +53,7 @@ __all__ = ["equilibrium_equations", "equilibria", "Equilibrium", "linearize", "L
 
 
 def _by_name(params: Mapping | None) -> dict:
-    return {getattr(k, "name", str(k)): _sympify(v, where=f"parameter {getattr(k, 'name', k)}")
+    return {getattr(k, "name", str(k)): _expression(v, where=f"parameter {getattr(k, 'name', k)}")
             for k, v in (params or {}).items()}
 
 

@@ -31,6 +31,7 @@ from ..conventions import t as _t
 from ..errors import IntegrationError, LagrangeError
 from ..limits import bounded
 from ..records import record
+from ..safe_sympify import lambdify as _lambdify
 from ..safe_sympify import sympify as _sympify
 from ..simplification import simplify
 
@@ -94,15 +95,15 @@ def action(path, system=None, params: Mapping | None = None, *, t=None) -> float
                             "eliminate the superfluous coordinates first (lagrange.eliminate)")
     n = eqs.n
     pvals = dict(zip(eqs.parameters, bind_parameters(eqs, system.bindable(params))))
-    Lf = sp.lambdify([list(eqs.q), list(eqs.qd), _t], (eqs.kinetic - eqs.potential).subs(pvals), "numpy")
+    Lf = _lambdify([list(eqs.q), list(eqs.qd), _t], (eqs.kinetic - eqs.potential).subs(pvals), "numpy")
     if isinstance(path, Mapping):
         missing = [str(c) for c in eqs.coordinates if c not in path]
         if missing:
             raise LagrangeError(f"the path must give every coordinate; missing {', '.join(missing)}")
         funcs = [path[c] for c in eqs.coordinates]
         if all(isinstance(f, sp.Basic) or isinstance(f, int | float) for f in funcs):
-            qs = sp.lambdify(_t, [_sympify(f) for f in funcs], "numpy")
-            vs = sp.lambdify(_t, [sp.diff(f, _t) for f in funcs], "numpy")
+            qs = _lambdify(_t, [_sympify(f) for f in funcs], "numpy")
+            vs = _lambdify(_t, [sp.diff(f, _t) for f in funcs], "numpy")
             return _quad(lambda s: Lf(qs(s), vs(s), s), t)
         path = _stack([f if callable(f) else (lambda s, c=float(f): c) for f in funcs])
     if callable(path):
@@ -167,8 +168,8 @@ def _discrete_functions(system, params):
     D2 = [sp.diff(Ld, bi) for bi in b]
     J = sp.Matrix(D1).jacobian(b)
     args = (a, b, h, tk)
-    return (sp.lambdify(args, D1, "numpy", cse=True), sp.lambdify(args, D2, "numpy", cse=True),
-            sp.lambdify(args, J, "numpy", cse=True), n)
+    return (_lambdify(args, D1, "numpy", cse=True), _lambdify(args, D2, "numpy", cse=True),
+            _lambdify(args, J, "numpy", cse=True), n)
 
 
 def variational_integrate(system, t_end: float, initial: Mapping, params: Mapping, *, h: float,
@@ -186,7 +187,7 @@ def variational_integrate(system, t_end: float, initial: Mapping, params: Mappin
     model = system.compile(params)
     # continuous momentum at t = 0
     L = eqs.kinetic - eqs.potential
-    pfun = sp.lambdify([list(eqs.q), list(eqs.qd), t], [sp.diff(L, v).subs(dict(zip(eqs.parameters, model.params)))
+    pfun = _lambdify([list(eqs.q), list(eqs.qd), t], [sp.diff(L, v).subs(dict(zip(eqs.parameters, model.params)))
                                                       for v in eqs.qd], "numpy")
     steps = int(round(t_end / h))
     qs = np.empty((steps + 1, n))

@@ -48,8 +48,8 @@ from pathlib import Path
 from ..errors import CacheError, CacheIntegrityWarning
 from .digest import compare_digest, mac
 
-__all__ = ["DIR_VAR", "TRUST_VAR", "SECRET_NAME", "cache_root", "cache_dir", "trusted", "atomic_write",
-           "write_sealed", "read_verified", "seal", "verify", "tag"]
+__all__ = ["DIR_VAR", "TRUST_VAR", "SECRET_NAME", "cache_root", "cache_dir", "trusted", "check_private",
+           "private_subdirectory", "atomic_write", "write_sealed", "read_verified", "seal", "verify", "tag"]
 
 #: the cache directory, when set (else ``$XDG_CACHE_HOME/lagrange``, else ``~/.cache/lagrange``)
 DIR_VAR = "LAGRANGE_CACHE_DIR"
@@ -133,6 +133,43 @@ def cache_dir() -> Path:
     return path
 
 
+def check_private(path: Path, what: str, fix: str = "") -> None:
+    """Apply the cache directory's rules to another directory lagrange keeps code in (``what`` names it,
+    ``fix`` adds a remedy to the message): :class:`CacheError` when ``path`` is owned by another user or
+    writable by group or others, unless ``$LAGRANGE_CACHE_TRUST`` is set."""
+    _refuse(path, os.stat(path), what, 0o022, f"`chmod 700 {path}` if it is yours{fix}")
+
+
+def private_subdirectory(path: Path, what: str) -> Path:
+    """The directory ``path``, made by this user with mode ``0700`` when missing; an existing one must be a
+    real directory (checked with ``lstat``: never a symbolic link), owned by this user and closed to group and
+    others. Nothing else is accepted, whatever ``$LAGRANGE_CACHE_TRUST`` says, so a directory someone else
+    made under a predictable name is refused (:class:`CacheError`) instead of being read."""
+    path = Path(path)
+    try:
+        os.mkdir(path, 0o700)
+        os.chmod(path, 0o700)
+    except FileExistsError:
+        pass
+    st = os.lstat(path)
+    uid = _euid()
+    problems = []
+    if stat.S_ISLNK(st.st_mode):
+        problems.append("a symbolic link")
+    elif not stat.S_ISDIR(st.st_mode):
+        problems.append("not a directory")
+    else:
+        if uid is not None and st.st_uid != uid:
+            problems.append(f"owned by uid {st.st_uid}, not by you (uid {uid})")
+        if st.st_mode & 0o077:
+            problems.append(f"open to group or others (mode {stat.S_IMODE(st.st_mode):04o})")
+    if problems:
+        raise CacheError(f"lagrange will not use the {what} {path}: it is {' and '.join(problems)}, so someone "
+                         f"else could have put code there for lagrange to load. Fix: remove {path} (lagrange "
+                         "makes it again, privately), or use a private directory")
+    return path
+
+
 def _create_secret(path: Path) -> None:
     """Write a new random key at ``path`` atomically (mode 0600); a key another process wrote first wins."""
     import secrets  # (here: once per cache directory; a run that reads the key never needs it)
@@ -151,12 +188,23 @@ def _create_secret(path: Path) -> None:
         Path(tmp).unlink(missing_ok=True)
 
 
+def _read_file(path: Path) -> bytes:
+    """The bytes of the regular file at ``path``, opened without following a symbolic link and without
+    blocking: a FIFO, device or socket found under an entry's name (which would block the run or never end)
+    or a link is refused with :class:`OSError`, never read."""
+    fd = os.open(path, os.O_RDONLY | getattr(os, "O_NOFOLLOW", 0) | getattr(os, "O_NONBLOCK", 0))
+    with os.fdopen(fd, "rb") as fh:
+        if not stat.S_ISREG(os.fstat(fh.fileno()).st_mode):
+            raise OSError(f"{path} is not a regular file")
+        return fh.read()
+
+
 def _secret(directory: Path) -> bytes:
     """The per-user key in ``directory``, created when missing."""
     path = directory / SECRET_NAME
     for _ in range(3):
         try:
-            fd = os.open(path, os.O_RDONLY | getattr(os, "O_NOFOLLOW", 0))
+            fd = os.open(path, os.O_RDONLY | getattr(os, "O_NOFOLLOW", 0) | getattr(os, "O_NONBLOCK", 0))
         except FileNotFoundError:
             _create_secret(path)
             continue
@@ -226,7 +274,7 @@ def read_verified(path: Path) -> bytes | None:
     Raises :class:`~lagrange.errors.CacheError` when the directory or its key is not private."""
     path = Path(path)
     try:
-        raw = path.read_bytes()
+        raw = _read_file(path)
     except FileNotFoundError:
         return None
     except OSError as exc:
@@ -260,14 +308,14 @@ def verify(path: Path) -> bool:
     :class:`~lagrange.errors.CacheIntegrityWarning`, once per process, when the file exists) otherwise."""
     path = Path(path)
     try:
-        data = path.read_bytes()
+        data = _read_file(path)
     except FileNotFoundError:
         return False
     except OSError as exc:
         _reject(path, f"it cannot be read ({exc})")
         return False
     try:
-        mark = _sidecar(path).read_bytes()
+        mark = _read_file(_sidecar(path))
     except OSError:
         _reject(path, "it carries no authentication tag")
         return False

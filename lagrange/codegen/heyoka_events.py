@@ -27,6 +27,7 @@ import sympy as sp
 
 from ..errors import MethodError
 from ..records import record
+from ..safe_sympify import lambdify as _lambdify
 
 __all__ = ["HeyokaEvent", "trace_event", "heyoka_events", "NonTerminalRecorder", "TerminalRecorder"]
 
@@ -146,7 +147,7 @@ def trace_event(event, nz: int, k: int = 0) -> sp.Expr:
 def _check_trace(event, expr, t0: float, z0: np.ndarray, k: int) -> None:
     """Refuse when the traced ``expr`` and ``event`` disagree at the initial state or at perturbed states."""
     syms = [_T, *_state_symbols(z0.size)]
-    f = sp.lambdify(syms, expr, modules="numpy")
+    f = _lambdify(syms, expr, modules="numpy")
     rng = np.random.default_rng(12345)
     points = [(t0, z0)] + [(t0 + 0.37 * j, z0 + 0.1 * rng.standard_normal(z0.size) * (1 + np.abs(z0)))
                            for j in range(1, 4)]

@@ -45,6 +45,7 @@ import sympy as sp
 from ..conventions import t as time_symbol
 from ..errors import InputError, IntegrationError, ParameterError
 from ..records import record
+from ..safe_sympify import lambdify as _lambdify
 
 __all__ = ["InputSchedule", "resolve_inputs", "VARYING_ROUTES", "input_help"]
 
@@ -201,7 +202,7 @@ def _classify(u, value, t_span, problems) -> tuple[str | None, object]:
             problems.append(f"input {u} = {value} contains {', '.join(sorted(map(str, extra)))}: an expression "
                             "value may contain lagrange.t only (substitute the parameters' values)")
             return None, None
-        return "time", sp.lambdify(time_symbol, value, modules="math")
+        return "time", _lambdify(time_symbol, value, modules="math", where=f"the value of input {u}")
     if isinstance(value, (str, bytes)):
         problems.append(f"input {u} = {value!r} is a string: strings are never evaluated; "
                         + input_help(u.name))

@@ -32,7 +32,7 @@ from pathlib import Path
 
 from ..errors import BackendError
 from ..records import record
-from .cache import atomic_write, cache_dir, read_verified, write_sealed
+from .cache import atomic_write, cache_dir, check_private, private_subdirectory, read_verified, write_sealed
 
 __all__ = ["numba_rhs", "cache_dir", "cache_key", "write_module", "atomic_write", "import_module",
            "decorate", "purge_numba_cache"]
@@ -101,6 +101,31 @@ def numba_cache_folder(path: Path) -> Path:
     return path.parent / "__pycache__"
 
 
+def private_numba_folder(path: Path) -> Path:
+    """:func:`numba_cache_folder` of the staged module ``path``, made safe before numba looks into it.
+
+    Without ``$NUMBA_CACHE_DIR`` it is ``__pycache__`` inside this process's private staging directory. With
+    it, the folder's name is predictable (numba derives it from the staging directory's path), so another
+    local user could make it first and plant an index there, which numba unpickles. So ``$NUMBA_CACHE_DIR``
+    falls under the cache directory's rules (:func:`~lagrange.codegen.cache.check_private`: yours, not
+    writable by group or others, unless ``$LAGRANGE_CACHE_TRUST`` is set), the folder itself must be a
+    private directory of this user (:func:`~lagrange.codegen.cache.private_subdirectory`: made with mode
+    0700, checked with ``lstat``, never a symbolic link, whatever the trust setting), and any numba files of
+    this module already there are deleted: numba's cache of a staged module comes only from its sealed bundle.
+    Raises :class:`~lagrange.errors.CacheError` when a check fails.
+    """
+    folder = numba_cache_folder(path)
+    if folder.parent != path.parent:  # under $NUMBA_CACHE_DIR, not next to the staged module
+        root = folder.parent
+        root.mkdir(mode=0o700, parents=True, exist_ok=True)
+        check_private(root, "numba cache directory ($NUMBA_CACHE_DIR)",
+                      "; or unset NUMBA_CACHE_DIR (lagrange keeps its compiled code in its own cache anyway)")
+    private_subdirectory(folder, "numba cache folder")
+    for stale in _numba_files(path):
+        stale.unlink(missing_ok=True)
+    return folder
+
+
 def _numba_files(path: Path) -> list[Path]:
     folder = numba_cache_folder(path)
     return sorted(p for p in folder.glob(f"{path.stem}.*") if p.suffix in (".nbi", ".nbc")) \
@@ -155,13 +180,12 @@ def write_module(prefix: str, text: str) -> tuple[str, Path]:
         bundle = read_verified(bundle_path)
         path.write_text(text, encoding="utf-8")
         os.utime(path, (_STAMP, _STAMP))  # numba < 0.60 stamps its index with the file's (mtime, size)
+        folder = private_numba_folder(path)
         try:
             members = _unpack(bundle, stem) if bundle is not None else []
         except (ValueError, UnicodeDecodeError):  # sealed by us yet malformed: rebuild
             members, bundle = [], None
         if members:
-            folder = numba_cache_folder(path)
-            folder.mkdir(parents=True, exist_ok=True)
             for name, data in members:
                 (folder / name).write_bytes(data)
         else:
@@ -180,12 +204,13 @@ def harvest(path: Path) -> None:
     if staged is None:
         return
     try:
+        private_subdirectory(numba_cache_folder(path), "numba cache folder")  # still this user's own
         files = _numba_files(path)
         bundle = _pack(files) if files else None
         if bundle is not None and bundle != staged.bundle:
             write_sealed(staged.bundle_path, bundle)
             staged.bundle = bundle
-    except OSError:
+    except OSError:  # (a CacheError too: a folder no longer private is not harvested)
         pass
 
 

@@ -35,9 +35,10 @@ import numpy as np
 import sympy as sp
 
 from ..derive.equations import Equations
-from ..errors import BackendError, ParameterError, SingularMassMatrixError, SpecError
+from ..errors import BackendError, ParameterError, SingularMassMatrixError, SpecError, shown
 from ..model.coordinates import coordinate_name
 from ..records import record
+from ..safe_sympify import lambdify as _lambdify
 
 __all__ = ["NumericModel", "ConstraintFunctions", "compile_equations", "bind_parameters", "BACKENDS"]
 
@@ -93,11 +94,15 @@ def bind_parameters(eqs: Equations, params: Mapping) -> np.ndarray:
         if n in by_name:
             try:
                 v = _number(by_name[n], f"{'input' if n in inputs else 'parameter'} {n}")
+            except OverflowError:
+                problems.append(f"{'input' if n in inputs else 'parameter'} {n} = {shown(by_name[n])} is beyond the "
+                                "floating-point range (about 1.8e308)")
+                continue
             except (TypeError, ValueError) as exc:
                 kind = "input" if n in inputs else "parameter"
                 extra = " (time-varying inputs are given to simulate)" if n in inputs else ""
                 why = f" ({exc})" if isinstance(exc, SpecError) else ""
-                problems.append(f"{kind} {n} = {by_name[n]!r} is not a number{extra}{why}")
+                problems.append(f"{kind} {n} = {shown(by_name[n])} is not a number{extra}{why}")
                 continue
             if not math.isfinite(v):
                 problems.append(f"{'input' if n in inputs else 'parameter'} {n} = {v} is not finite")
@@ -362,7 +367,7 @@ class NumericModel:
         tt, ys, ps = numeric_arguments(self.equations)
         # rows of floats from the math module, as the generated code uses: lambdify's numpy namespace imports
         # numpy.f2py, numpy.testing and numpy.ma (0.3 s of a warm re-run of a model with Euler angles)
-        return sp.lambdify((tt, ys, ps), self.equations.mass_matrix.xreplace(ren).tolist(), modules="math", cse=True)
+        return _lambdify((tt, ys, ps), self.equations.mass_matrix.xreplace(ren).tolist(), modules="math", cse=True)
 
     def mass_matrix(self, t: float, y) -> np.ndarray:
         """Numeric ``M`` (n, n) at ``(t, y)``, ``y = [q, q̇]`` (M depends on t and q only). Its function is built
@@ -587,13 +592,13 @@ def _reference_functions(eqs: Equations):
     tt, ys, ps = numeric_arguments(eqs)
     M = eqs.mass_matrix.xreplace(ren)
     f = eqs.forcing.xreplace(ren)
-    mf = sp.lambdify((tt, ys, ps), (M, f), modules="numpy", cse=False)
+    mf = _lambdify((tt, ys, ps), (M, f), modules="numpy", cse=False)
 
     def mass_forcing(t_, y, p):
         return mf(t_, list(y), list(p))
 
     m = eqs.m
-    Ac = sp.lambdify((tt, ys, ps), (eqs.constraint_matrix.xreplace(ren), sp.Matrix(eqs.constraint_rhs).xreplace(ren),
+    Ac = _lambdify((tt, ys, ps), (eqs.constraint_matrix.xreplace(ren), sp.Matrix(eqs.constraint_rhs).xreplace(ren),
                                     eqs.reaction_matrix.xreplace(ren)), modules="numpy") if m else None
 
     def rhs(t_, y, p):
@@ -660,7 +665,7 @@ def _aux_lambdify(eqs: Equations):
     tt, ys, ps = numeric_arguments(eqs)
     T, h, T2, T0 = eqs.energy_parts()
     exprs = [sp.sympify(e).xreplace(ren) for e in (T, eqs.potential, h, eqs.jacobi_rate, T2, T0)]
-    return sp.lambdify((tt, ys, ps, list(eqs.multipliers)), exprs, modules="numpy", cse=True)
+    return _lambdify((tt, ys, ps, list(eqs.multipliers)), exprs, modules="numpy", cse=True)
 
 
 def lam_required(eqs: Equations) -> bool:
@@ -683,10 +688,10 @@ class ConstraintFunctions:
         phis = [eqs.constraint_positions[k].xreplace(ren) for k in self.holonomic]
         Ah = sp.Matrix([[sp.diff(ph, qj) for qj in qs] for ph in phis]) if phis else sp.zeros(0, n)
         args = (tt, qs, ps)
-        self._phi = sp.lambdify(args, phis, modules="math", cse=True)
-        self._Ah = sp.lambdify(args, Ah, modules="numpy", cse=True)
-        self._A = sp.lambdify(args, eqs.constraint_matrix.xreplace(ren), modules="numpy", cse=True)
-        self._b = sp.lambdify(args, [e.xreplace(ren) for e in eqs.constraint_bias], modules="math", cse=True)
+        self._phi = _lambdify(args, phis, modules="math", cse=True)
+        self._Ah = _lambdify(args, Ah, modules="numpy", cse=True)
+        self._A = _lambdify(args, eqs.constraint_matrix.xreplace(ren), modules="numpy", cse=True)
+        self._b = _lambdify(args, [e.xreplace(ren) for e in eqs.constraint_bias], modules="math", cse=True)
         self._p = list(params)
         self.n, self.m = n, eqs.m
 

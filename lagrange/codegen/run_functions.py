@@ -28,6 +28,7 @@ from ..conventions import t
 from ..derive.equations import Equations
 from ..errors import InputError
 from ..records import record
+from ..safe_sympify import lambdify as _lambdify
 from .cse import numeric_arguments, rename_map
 
 __all__ = ["jacobian_function", "power_function", "sliding_functions", "switched_pieces", "SwitchedPieces",
@@ -49,7 +50,7 @@ def jacobian_function(model) -> Callable:
 
     dM = [no_delta(M.diff(y)) for y in ys]
     df = no_delta(f.jacobian(ys))
-    fn = sp.lambdify((tt, ys, ps), (M, f, df, dM), modules="numpy", cse=True)
+    fn = _lambdify((tt, ys, ps), (M, f, df, dM), modules="numpy", cse=True)
     params = list(model.params)
 
     def jac(t_, y):
@@ -71,7 +72,7 @@ def _rate_function(eqs: Equations) -> Callable:
     """``(t, y, p, λ) ↦ dh/dt`` of ``eqs`` (plain floats; one CSE'd lambdify)."""
     ren = rename_map(eqs)
     tt, ys, ps = numeric_arguments(eqs)
-    return sp.lambdify((tt, ys, ps, list(eqs.multipliers)), eqs.jacobi_rate.xreplace(ren), modules="math", cse=True)
+    return _lambdify((tt, ys, ps, list(eqs.multipliers)), eqs.jacobi_rate.xreplace(ren), modules="math", cse=True)
 
 
 def power_function(model) -> Callable:
@@ -90,7 +91,7 @@ def sliding_functions(model) -> Callable:
     eqs = model.equations
     ren = rename_map(eqs)
     tt, ys, ps = numeric_arguments(eqs)
-    fn = sp.lambdify((tt, ys, ps), [v.xreplace(ren) for _, v in eqs.sliding_velocities], modules="math")
+    fn = _lambdify((tt, ys, ps), [v.xreplace(ren) for _, v in eqs.sliding_velocities], modules="math")
     return lambda t_, y, p: fn(t_, list(y), list(p))
 
 
@@ -135,8 +136,8 @@ def switched_pieces(model, switches: list) -> SwitchedPieces:
     switched = switched.with_schedule(model.schedule) if model.schedule is not None else switched
     ren = rename_map(eqs)
     tt, ys, ps = numeric_arguments(eqs)  # switched eqs carry the σ's among their parameters
-    u = sp.lambdify((tt, ys, ps), [w.xreplace(ren) for w in switches], modules="math")
-    grad = sp.lambdify((tt, ys, ps), [[sp.diff(w, s).xreplace(ren) for s in (*eqs.q, *eqs.qd, t)]
+    u = _lambdify((tt, ys, ps), [w.xreplace(ren) for w in switches], modules="math")
+    grad = _lambdify((tt, ys, ps), [[sp.diff(w, s).xreplace(ren) for s in (*eqs.q, *eqs.qd, t)]
                                       for w in switches], modules="math")
     rate = _rate_function(eqs)
     schedule = switched.schedule

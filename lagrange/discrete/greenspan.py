@@ -42,6 +42,7 @@ from ..model.coordinates import coordinate_name, coordinates, is_coordinate, par
 from ..model.rotations import EulerAngles
 from ..model.system import System
 from ..records import record
+from ..safe_sympify import lambdify as _lambdify
 from .pair_dg import DGResult, PairSystem
 
 __all__ = ["EXAMPLES", "Example", "initial_vertices", "molecular_model", "run_molecular", "rigid_system",
@@ -183,7 +184,7 @@ def _vertex_function(system: System):
 
     exprs = [to_symbols(P, system.coordinates) for P in pos]
     syms = [to_symbols(q, system.coordinates) for q in system.coordinates]
-    f = sp.lambdify([syms], [list(e) for e in exprs], "numpy")
+    f = _lambdify([syms], [list(e) for e in exprs], "numpy")
     return lambda q: np.array(f(list(q)), dtype=float)
 
 

@@ -60,6 +60,8 @@ import sympy as sp
 from ..codegen.source import print_expr
 from ..errors import DeclarationError, InitialConditionError, IntegrationError
 from ..records import record
+from ..safe_sympify import lambdify as _lambdify
+from ..safe_sympify import sympify as _sympify
 from ..simplification import is_zero
 
 __all__ = ["divided_difference", "PairSystem", "DGResult", "SOLVERS"]
@@ -75,7 +77,7 @@ def divided_difference(phi, r: sp.Symbol) -> tuple[sp.Expr, sp.Expr, bool]:
 
     Returns ``(D, dD/db, exact)`` in the symbols ``a, b``; ``exact`` is False when the cancellation could
     not be removed symbolically (non-rational φ)."""
-    phi = sp.sympify(phi)
+    phi = _sympify(phi)
     q = sp.cancel((phi.subs(r, _b) - phi.subs(r, _a)) / (_b - _a))
     num, den = sp.fraction(sp.together(q))
     exact = not sp.Poly(den, _a, _b).as_expr().has(_b - _a) if den.is_polynomial(_a, _b) else False
@@ -535,13 +537,13 @@ class PairSystem:
         if bad_fixed:
             raise DeclarationError(f"fixed: (particle 0…{N - 1}, axis 0/1/2) pairs; got {bad_fixed}")
         self.fixed = tuple((int(i), int(c)) for i, c in fixed)
-        self.potential = sp.sympify(potential)
+        self.potential = _sympify(potential)
         self.r = r
         D, Db, exact = divided_difference(self.potential, r)
         self.exact = exact
         dphi_mid = sp.diff(self.potential, r).subs(r, (_a + _b) / 2)
         X, Y, Z = sp.symbols("x y z", real=True)
-        U = sp.sympify(external if external is not None else 0)
+        U = _sympify(external if external is not None else 0)
         bad = U.free_symbols - {X, Y, Z}
         if bad:
             raise DeclarationError(f"the external potential may use only x, y, z (Symbol('x', real=True), …); "
@@ -555,9 +557,9 @@ class PairSystem:
                                Ux=print_expr(grads[0]) + " + 0.0 * x", Uy=print_expr(grads[1]) + " + 0.0 * y",
                                Uz=print_expr(grads[2]) + " + 0.0 * z",
                                **{k: print_expr(v) + " + 0.0 * x" for k, v in hes.items()})
-        self._U = sp.lambdify((X, Y, Z), U, "numpy")
+        self._U = _lambdify((X, Y, Z), U, "numpy")
         self._mod = _module(src)
-        self._phi = sp.lambdify(r, self.potential, "numpy")
+        self._phi = _lambdify(r, self.potential, "numpy")
         free = [3 * i + c for i in range(N) for c in range(3) if (i, c) not in self.fixed]
         self._free = np.array(free, dtype=np.int64)
         # momentum components the scheme conserves exactly (pair forces cancel; nothing external acts along c)

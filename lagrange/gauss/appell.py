@@ -31,6 +31,7 @@ from ..model.bodies import Particle
 from ..model.coordinates import coordinate_name, to_symbols
 from ..model.rigid_body import RigidBody
 from ..records import record
+from ..safe_sympify import lambdify as _lambdify
 from ..simplification import is_zero
 
 __all__ = ["AppellResult", "appell_identity", "acceleration_energy"]
@@ -75,7 +76,7 @@ def acceleration_energy(system) -> sp.Expr:
 
 def _numeric_zero(d, scale_exprs, syms, rng, points) -> str | None:
     """A counterexample description, or None when ``d`` is ~0 at every random point."""
-    f = sp.lambdify(syms, [d, *scale_exprs], modules="numpy")
+    f = _lambdify(syms, [d, *scale_exprs], modules="numpy")
     for _ in range(points):
         vals = [rng.uniform(0.15, 0.85) if not getattr(s, "is_positive", False) else rng.uniform(1.1, 2.3)
                 for s in syms]

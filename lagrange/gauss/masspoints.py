@@ -29,11 +29,13 @@ import numpy as np
 import sympy as sp
 
 from ..conventions import t
-from ..errors import ParameterError
+from ..errors import LagrangeError, ParameterError, shown
 from ..model.bodies import Particle
 from ..model.coordinates import position_symbol, to_symbols, velocity_symbol
 from ..model.rigid_body import RigidBody
 from ..records import record
+from ..safe_sympify import lambdify as _lambdify
+from ..safe_sympify import sympify as _sympify
 
 __all__ = ["NotApplicable", "MassPointModel", "mass_point_model", "equimomental_offsets", "declared_symbols"]
 
@@ -116,7 +118,7 @@ class MassPointModel:
 
 
 def _numeric(expr, values: dict, what: str) -> float:
-    e = sp.sympify(expr).xreplace(values)
+    e = _sympify(expr).xreplace(values)
     try:
         return float(e)
     except TypeError:
@@ -167,13 +169,24 @@ def _selection(points, B) -> tuple[np.ndarray, np.ndarray, tuple]:
 
 def _bind(exprs, coords, params: Mapping) -> tuple[list, tuple]:
     qsyms = {position_symbol(q) for q in coords} | {velocity_symbol(q) for q in coords}
-    free = set().union(*(sp.sympify(e).free_symbols for e in exprs)) - qsyms - {t}
+    free = set().union(*(_sympify(e).free_symbols for e in exprs)) - qsyms - {t}
     by_name = {(k.name if isinstance(k, sp.Symbol) else str(k)): v for k, v in params.items()}
     syms = sorted(free, key=lambda s: s.name)
     missing = [s.name for s in syms if s.name not in by_name]
     if missing:
         raise ParameterError(f"missing value(s) for parameter(s) {', '.join(missing)}")
-    return syms, tuple(float(sp.sympify(by_name[s.name])) for s in syms)
+    return syms, tuple(_float(by_name[s.name], s.name) for s in syms)
+
+
+def _float(value, name: str) -> float:
+    """The number a parameter value stands for (a string is read by the spec parser, never evaluated);
+    ParameterError otherwise."""
+    try:
+        return float(_sympify(value, where=f"parameter {name}"))
+    except LagrangeError:
+        raise
+    except (TypeError, ValueError, OverflowError):
+        raise ParameterError(f"parameter {name} = {shown(value)} is not a number") from None
 
 
 def mass_point_model(system, params: Mapping) -> MassPointModel:
@@ -195,7 +208,7 @@ def mass_point_model(system, params: Mapping) -> MassPointModel:
                             "here covers ideal constraints)")
     coords = system.coordinates
     by_name = {(k.name if isinstance(k, sp.Symbol) else str(k)): v for k, v in params.items()}
-    values = {s: sp.Float(float(by_name[s.name])) for s in _all_symbols(system) if s.name in by_name}
+    values = {s: sp.Float(_float(by_name[s.name], s.name)) for s in _all_symbols(system) if s.name in by_name}
     base, points, signed = _bodies(system, values)
     if not points:
         raise NotApplicable("no massive particle or rigid body")
@@ -211,8 +224,8 @@ def mass_point_model(system, params: Mapping) -> MassPointModel:
     data = _force_data(system, coords, qs, qds)
     syms, pvals = _bind([e for M in kin for e in M] + [e for M in data for e in sp.Matrix([M])], coords, params)
     args = (t, qs, qds, syms)
-    kin_f = sp.lambdify(args, kin, modules="numpy", cse=True)
-    data_f = sp.lambdify(args, data, modules="numpy", cse=True)
+    kin_f = _lambdify(args, kin, modules="numpy", cse=True)
+    data_f = _lambdify(args, data, modules="numpy", cse=True)
     return MassPointModel(masses, labels, len(coords), len(system.constraints),
                           tuple(c.name for c in system.constraints), E, kin_f, data_f, pvals, tuple(signed))
 
@@ -227,7 +240,7 @@ def declared_symbols(system) -> set:
         exprs += list(b.position_vectors()) + [getattr(b, "mass", 0)]
         if isinstance(b, RigidBody):
             exprs += [b.inertia, b.com, b.R]
-    out = set().union(*(sp.sympify(e).free_symbols for e in exprs))
+    out = set().union(*(_sympify(e).free_symbols for e in exprs))
     return {s for s in out if s != t and not s.name.startswith("delta_")}
 
 
@@ -236,7 +249,7 @@ def _all_symbols(system) -> set:
     for b in system.bodies:
         for attr in ("mass", "inertia", "com"):
             if hasattr(b, attr):
-                out |= sp.sympify(getattr(b, attr)).free_symbols
+                out |= _sympify(getattr(b, attr)).free_symbols
     return out
 
 

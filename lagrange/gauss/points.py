@@ -34,6 +34,8 @@ from scipy.integrate import solve_ivp
 from ..conventions import t as T_SYM
 from ..errors import DeclarationError
 from ..records import record
+from ..safe_sympify import lambdify as _lambdify
+from ..safe_sympify import sympify as _sympify
 from .kkt import CONSISTENCY_TOL, LeastConstraintSolution, solve_least_constraint
 
 __all__ = [
@@ -77,7 +79,7 @@ def _path_functions(path):
     if vec.shape != (3, 1) or vec.free_symbols - {T_SYM}:
         raise DeclarationError(f"a dragging path must be 3 expressions in lagrange.t only, got {list(vec)}",
                                subject="Dragging")
-    f = sp.lambdify(T_SYM, [list(vec), list(vec.diff(T_SYM)), list(vec.diff(T_SYM, 2))], modules="numpy")
+    f = _lambdify(T_SYM, [list(vec), list(vec.diff(T_SYM)), list(vec.diff(T_SYM, 2))], modules="numpy")
     return lambda t: tuple(np.array(c, dtype=float).ravel() * np.ones(3) for c in f(t))
 
 
@@ -111,7 +113,7 @@ class _Symbolic:
     """Numeric φ, ∇φ, ∇²φ, ∂_t∇φ, ∂_tφ, ∂_ttφ of a holonomic φ(u, t) over variables u."""
 
     def __init__(self, phi, variables, label):
-        phi = sp.sympify(phi)
+        phi = _sympify(phi)
         stray = phi.free_symbols - set(variables) - {T_SYM}
         if stray:
             raise DeclarationError(f"{label}: φ = {phi} contains {', '.join(sorted(map(str, stray)))}, which are "
@@ -121,7 +123,7 @@ class _Symbolic:
         grad = sp.Matrix([phi]).jacobian(u)
         parts = [phi, list(grad), sp.hessian(phi, u).tolist(), list(grad.diff(T_SYM)), phi.diff(T_SYM),
                  phi.diff(T_SYM, 2)]
-        self._f = sp.lambdify((T_SYM, u), parts, modules="numpy", cse=True)
+        self._f = _lambdify((T_SYM, u), parts, modules="numpy", cse=True)
         self.k = len(u)
 
     def __call__(self, t, u, ud):
@@ -179,7 +181,7 @@ def _symbolic_forces(forces: Mapping, n: int) -> Callable:
     X, V = point_symbols(n)
     keys = sorted(forces)
     exprs = [list(sp.Matrix(forces[k])) + [0] * (3 - len(sp.Matrix(forces[k]))) for k in keys]
-    f = sp.lambdify((T_SYM, list(X.ravel()), list(V.ravel())), exprs, modules="numpy", cse=True)
+    f = _lambdify((T_SYM, list(X.ravel()), list(V.ravel())), exprs, modules="numpy", cse=True)
 
     def F(t, x, v):
         out = np.zeros((n, 3))

@@ -43,7 +43,8 @@ def run(req: RunRequest) -> Trajectory:
         warn_untrusted("heyoka", req.equations, model, req.t_span, req.y0)
     try:
         return integrate_heyoka(model, req.t_span, req.y0, t_eval, rtol=req.rtol, atol=req.atol,
-                                max_step=req.max_step, label="heyoka (taylor_adaptive, LLVM)", events=req.events)
+                                max_step=req.max_step, label="heyoka (taylor_adaptive, LLVM)", events=req.events,
+                                max_steps=req.max_steps)
     except ValueError as exc:
         if isinstance(exc, LagrangeError):
             raise

@@ -27,14 +27,21 @@ from ..errors import MethodError, OptionError
 from ..records import record
 
 __all__ = ["FrictionOptions", "Stabilization", "StepOptions", "FRICTIONS", "STABILIZATIONS", "MAX_POINTS",
-           "MAX_STEPS", "check_run_options", "merge_deprecated", "as_friction", "as_stabilization", "as_step"]
+           "MAX_STEPS", "DEFAULT_MAX_STEPS", "DEFAULT_MAX_OUTPUT_BYTES", "check_run_options", "check_step_count",
+           "check_output_size",
+           "merge_deprecated", "as_friction", "as_stabilization", "as_step"]
 
 FRICTIONS = ("events", "regularize")
 STABILIZATIONS = ("projection", "baumgarte", "none")
 #: most output points a run may record (8 bytes × 2n per point: 10⁷ points of a 5-DOF system is 800 MB)
 MAX_POINTS = 10_000_000
-#: most fixed steps (or span / max_step) a run may take: beyond this it would run for days
+#: the largest ``max_steps`` a run may be given: beyond this it would run for days
 MAX_STEPS = 10**9
+#: ``simulate(max_steps=...)`` by default: the steps a run may need (span / max_step, or span / step for a
+#: fixed-step method) before it is refused up front; the compiled loops stop at the same count
+DEFAULT_MAX_STEPS = 10_000_000
+#: ``simulate(max_output_bytes=...)`` by default: the size of the recorded states (output times × 2n × 8 bytes)
+DEFAULT_MAX_OUTPUT_BYTES = 1_000_000_000
 
 
 def _positive_finite(option: str, value, *, allow_zero: bool = False) -> float:
@@ -175,33 +182,58 @@ def merge_deprecated(friction, stabilization, *, friction_epsilon=_DEPRECATED, b
     return fr, st
 
 
+def _count(option: str, value, limit: int) -> int:
+    """``value`` as an int in [1, limit], or OptionError naming ``option``."""
+    if isinstance(value, bool) or not isinstance(value, int | np.integer) or not 1 <= value <= limit:
+        raise OptionError(f"{option} must be an integer between 1 and {limit:.0e}, got {value!r}")
+    return int(value)
+
+
+def check_step_count(span: float, h: float, option: str, max_steps) -> None:
+    """OptionError when steps of at most ``h`` (the option named ``option``: ``max_step`` or ``step``) would
+    need more than ``max_steps`` (an integer in [1, MAX_STEPS], checked too) over ``span``."""
+    limit = _count("max_steps", max_steps, MAX_STEPS)
+    if span / h > limit:
+        raise OptionError(f"{option}={h!r} would take {span / h:.3g} steps over the span {span:g}, more than the "
+                          f"limit max_steps={limit:,}: use {option} >= {span / limit:.3g}, or raise max_steps (up "
+                          f"to {MAX_STEPS:.0e})")
+
+
+def check_output_size(n_times: int, n_state: int, max_output_bytes) -> None:
+    """OptionError when ``n_times`` recorded states of ``n_state`` floats would exceed ``max_output_bytes``
+    (a positive integer: refused too when it is not one)."""
+    limit = _count("max_output_bytes", max_output_bytes, 2**62)
+    size = n_times * n_state * 8
+    if size > limit:
+        raise OptionError(f"the run would record {n_times:,} states of {n_state} numbers ({size:.3g} bytes), more "
+                          f"than max_output_bytes={limit:,}: ask for fewer output times (n_points or t_eval), or "
+                          "raise max_output_bytes if the memory is there")
+
+
 def check_run_options(t_span, *, rtol, atol, n_points, max_step, t_eval, step: StepOptions | None,
-                      adaptive: bool) -> np.ndarray | None:
+                      adaptive: bool, max_steps=DEFAULT_MAX_STEPS) -> np.ndarray | None:
     """Validate the numeric options of a run over ``t_span = (t0, t1)``; return ``t_eval`` as an array.
 
     Raises
     ------
     OptionError
         ``rtol`` not finite or <= 0, ``atol`` not finite or < 0, ``atol = rtol = 0``; ``n_points`` not an
-        integer in [2, MAX_POINTS]; ``max_step`` not > 0 or so small that the span needs more than MAX_STEPS
-        steps; ``step`` the same; ``t_eval`` not one-dimensional, not finite, outside the span, unsorted or
-        longer than MAX_POINTS.
+        integer in [2, MAX_POINTS]; ``max_steps`` not an integer in [1, MAX_STEPS]; ``max_step`` not > 0 or so
+        small that the span needs more than ``max_steps`` steps; ``step`` the same; ``t_eval`` not
+        one-dimensional, empty, not finite, outside the span, unsorted or longer than MAX_POINTS.
     """
     t0, t1 = t_span
     span = abs(t1 - t0)
+    limit = _count("max_steps", max_steps, MAX_STEPS)
     if adaptive:
         _positive_finite("rtol", rtol)  # so atol = rtol = 0 is refused too
         _positive_finite("atol", atol, allow_zero=True)
         if isinstance(max_step, bool) or not isinstance(max_step, int | float | np.integer | np.floating) \
                 or math.isnan(max_step) or max_step <= 0:
             raise OptionError(f"max_step must be a number > 0 (inf: no limit), got {max_step!r}")
-        if span / float(max_step) > MAX_STEPS:
-            raise OptionError(f"max_step={max_step!r} would take more than {MAX_STEPS:.0e} steps over the span "
-                              f"{span:g} (span / max_step = {span / float(max_step):.3g}); the limit is max_step "
-                              f">= {span / MAX_STEPS:.3g}")
-    if step is not None and span / step.h > MAX_STEPS:
-        raise OptionError(f"step={step.h!r} would take {span / step.h:.3g} steps over the span {span:g}, more than "
-                          f"the limit {MAX_STEPS:.0e}; use step >= {span / MAX_STEPS:.3g}")
+        check_step_count(span, float(max_step), "max_step", limit)
+    if step is not None:
+        check_step_count(span, step.h, "step", limit)
     if isinstance(n_points, bool) or not isinstance(n_points, int | np.integer):
         raise OptionError(f"n_points must be an integer, got {n_points!r}")
     if not 2 <= n_points <= MAX_POINTS:
@@ -214,6 +246,9 @@ def check_run_options(t_span, *, rtol, atol, n_points, max_step, t_eval, step: S
         raise OptionError(f"t_eval must be a sequence of times, got {t_eval!r}") from None
     if te.ndim != 1:
         raise OptionError(f"t_eval must be one-dimensional, got shape {te.shape}")
+    if te.size == 0:
+        raise OptionError("t_eval is empty: give at least one output time, or leave it out (n_points equally "
+                          "spaced times)")
     if te.size > MAX_POINTS:
         raise OptionError(f"t_eval has {te.size:,} times, more than the limit {MAX_POINTS:,}")
     if te.size and not np.all(np.isfinite(te)):

@@ -23,6 +23,7 @@ from ..errors import (
     OptionError,
     ParameterError,
     SingularMassMatrixError,
+    shown,
 )
 from ..model.coordinates import coordinate_name, is_coordinate
 
@@ -51,8 +52,11 @@ def initial_state(coords: Sequence, initial: Mapping) -> np.ndarray:
             continue
         try:
             v = float(value)
+        except OverflowError:
+            problems.append(f"initial value of {key} = {shown(value)} is beyond the floating-point range")
+            continue
         except (TypeError, ValueError):
-            problems.append(f"initial value of {key} = {value!r} is not a number")
+            problems.append(f"initial value of {key} = {shown(value)} is not a number")
             continue
         if not math.isfinite(v):
             problems.append(f"initial value of {key} = {v} is not finite")
@@ -86,31 +90,52 @@ class GimbalLockWarning(UserWarning):
     """Euler angles near θ = 0 or π: the mass matrix is nearly singular (gimbal lock)."""
 
 
-def _gimbal_hint(system) -> str:
-    """The gimbal-lock hint when a body of ``system`` has Euler angles, else ""; remembered per bodies tuple."""
-    seen = getattr(system, "__dict__", {}).get("_gimbal_hint")
-    if seen is not None and seen[0] is system.bodies:
-        return seen[1]
-    hint = _euler_hint(system.bodies)
-    if hasattr(system, "__dict__"):
-        system.__dict__["_gimbal_hint"] = (system.bodies, hint)
-    return hint
-
-
-def _euler_hint(bodies) -> str:
-    from ..model.rotations import EulerAngles
-
-    if any(isinstance(getattr(b, "orientation", None), EulerAngles) for b in bodies):
-        return (" Gimbal lock: Wells' Euler angles are singular at θ = 0 or π (only ψ + φ is defined there). "
+#: |sin θ| below which Euler angles are reported as at (or next to) gimbal lock
+GIMBAL_SIN = 1e-3
+_GIMBAL_HINT = (" Gimbal lock: Wells' Euler angles are singular at θ = 0 or π (only ψ + φ is defined there). "
                 "Use RigidBody(..., orientation=Quaternion(q0, q1, q2, q3)) — it is regular everywhere (a "
                 "sleeping top) — or tilt the reference axes.")
+
+
+def _lockable(system) -> list:
+    """The nutation angles θ of the bodies of ``system`` whose Euler angles can lock (ψ and φ both move with the
+    coordinates); remembered per bodies tuple."""
+    seen = getattr(system, "__dict__", {}).get("_gimbal_angles")
+    if seen is not None and seen[0] is system.bodies:
+        return seen[1]
+    from ..model.rotations import EulerAngles
+
+    coords = tuple(system.coordinates)
+    angles = [b.orientation.theta for b in system.bodies if isinstance(getattr(b, "orientation", None), EulerAngles)
+              and b.orientation.psi.has(*coords) and b.orientation.phi.has(*coords)]
+    if hasattr(system, "__dict__"):
+        system.__dict__["_gimbal_angles"] = (system.bodies, angles)
+    return angles
+
+
+def _gimbal_hint(system, model: NumericModel, t0: float, y0) -> str:
+    """The gimbal-lock hint when it is the cause at ``(t0, y0)``: a body's Euler angles can lock and its θ is
+    within :data:`GIMBAL_SIN` of 0 or π there (or cannot be evaluated); else ""."""
+    angles = _lockable(system) if hasattr(system, "bodies") else []
+    if not angles:
+        return ""
+    from ..conventions import t
+
+    values = {t: float(t0), **dict(zip(model.equations.parameters, model.params.tolist())),
+              **{q: float(v) for q, v in zip(system.coordinates, y0)}}
+    for theta in angles:
+        try:
+            if abs(math.sin(float(theta.xreplace(values)))) < GIMBAL_SIN:
+                return _GIMBAL_HINT
+        except (TypeError, ValueError):  # θ not a number at this state: the hint cannot be ruled out
+            return _GIMBAL_HINT
     return ""
 
 
 def check_initial_mass_matrix(system, model: NumericModel, t0: float, y0) -> None:
-    """Raise on a singular mass matrix (naming coordinates, with a gimbal-lock hint for Euler angles) and
-    warn when it is nearly singular."""
-    hint = _gimbal_hint(system)
+    """Raise on a singular mass matrix (naming coordinates; the gimbal-lock hint when Euler angles are at θ = 0
+    or π there) and warn when it is nearly singular at Euler angles' gimbal lock."""
+    hint = _gimbal_hint(system, model, t0, y0)
     try:
         model.fun(t0, y0)
     except SingularMassMatrixError as exc:

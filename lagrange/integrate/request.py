@@ -10,7 +10,7 @@ import numpy as np
 
 from ..codegen.numeric import NumericModel
 from ..records import record
-from .options import FrictionOptions, Stabilization, StepOptions
+from .options import DEFAULT_MAX_STEPS, FrictionOptions, Stabilization, StepOptions
 
 __all__ = ["RunRequest"]
 
@@ -34,6 +34,7 @@ class RunRequest:
     events : the user's event functions (a list)
     switches : the ``sign()`` arguments to integrate with events (empty when regularized or absent)
     friction, stabilization, step : the option objects
+    max_steps : the most steps the run may take (the scipy methods stop there with an IntegrationError)
     """
 
     system: object
@@ -60,3 +61,4 @@ class RunRequest:
     stabilization: Stabilization
     step: StepOptions | None
     model_bound: bool = False
+    max_steps: int = DEFAULT_MAX_STEPS

@@ -16,12 +16,19 @@ from collections.abc import Mapping
 import numpy as np
 
 from ..codegen.numeric import NumericModel
-from ..errors import IntegrationError, LagrangeError, MethodError
+from ..errors import IntegrationError, LagrangeError, MethodError, shown
 from ..results.trajectory import Trajectory
 from . import registry  # (auto is imported where method="auto" is resolved: a named method never loads it)
 from .checks import assess
 from .options import _DEPRECATED as _UNSET
-from .options import StepOptions, check_run_options, merge_deprecated
+from .options import (
+    DEFAULT_MAX_OUTPUT_BYTES,
+    DEFAULT_MAX_STEPS,
+    StepOptions,
+    check_output_size,
+    check_run_options,
+    merge_deprecated,
+)
 from .prepare import GimbalLockWarning, check_model, initial_state, model_for, split_inputs
 from .request import RunRequest
 
@@ -100,6 +107,8 @@ def simulate(
     project_initial=_UNSET,
     step: float | StepOptions | None = None,
     loop: str = "auto",
+    max_steps: int = DEFAULT_MAX_STEPS,
+    max_output_bytes: int = DEFAULT_MAX_OUTPUT_BYTES,
 ) -> Trajectory:
     """Integrate Lagrange's equations of ``system``.
 
@@ -133,6 +142,14 @@ def simulate(
     t_eval : output times; default ``n_points`` equally spaced times (fixed-step methods record about
         ``n_points`` states instead)
     max_step : largest step of the adaptive scipy methods
+    max_steps : the most steps a run may take: a run whose ``max_step`` (adaptive) or ``step`` (fixed-step)
+        would take more over the span is refused up front (:class:`~lagrange.errors.OptionError`), and a scipy
+        run that takes more anyway (tiny steps of its own choosing) stops there with an
+        :class:`~lagrange.errors.IntegrationError` carrying the trajectory so far; an integer in [1, 10⁹],
+        default 10⁷ (:data:`~lagrange.integrate.options.DEFAULT_MAX_STEPS`)
+    max_output_bytes : the most memory the recorded states may take (output times × 2n × 8 bytes); a run
+        that would record more is refused up front; default 10⁹
+        (:data:`~lagrange.integrate.options.DEFAULT_MAX_OUTPUT_BYTES`)
     step : the step of the fixed-step geometric methods: a number or a :class:`~lagrange.integrate.options.StepOptions`
     events : scipy-style event callables ``event(t, y)`` (``terminal``/``direction`` attributes honoured)
     backend : ``python`` (default), ``numba``, ``reference`` or ``auto``; see :mod:`lagrange.codegen.numeric`
@@ -202,7 +219,8 @@ def simulate(
     rtol, atol = (DEFAULT_RTOL if rtol is None else rtol), (DEFAULT_ATOL if atol is None else atol)
     t_eval = check_run_options((t0, t1), rtol=rtol, atol=atol, n_points=n_points, max_step=max_step,
                                t_eval=t_eval, step=step_options,
-                               adaptive=entry is None or entry.adaptive or given != (None, None))
+                               adaptive=entry is None or entry.adaptive or given != (None, None),
+                               max_steps=max_steps)
     # a Taylor-series method reads the whole right-hand side as one expression: a structural system gives it its
     # expanded equations (cached on disk) without deriving the structural form it would not use
     taylor = entry is not None and entry.family == "Taylor series" and model is None
@@ -216,6 +234,7 @@ def simulate(
     if eqs.planar_friction:  # friction over a surface: exact |v| (floored) or regularized sqrt(|v|² + ε²)
         eqs = NumericModel.planar_friction(eqs, fr.treatment, fr.epsilon)
     y0 = initial_state(eqs.coordinates, initial)
+    check_output_size(int(n_points) if t_eval is None else max(len(t_eval), 2), y0.size, max_output_bytes)
     params, constants, schedule = split_inputs(eqs, params, inputs, (t0, t1), y0)
     needs = _needs(eqs, events, switches, schedule) | ({"dense_output": ""} if t_eval is not None else {})
     why, bound = "", False
@@ -244,7 +263,7 @@ def simulate(
                      initial=initial, params=params, constants=constants, schedule=schedule, model=model,
                      backend=backend, loop=loop, rtol=rtol, atol=atol, max_step=max_step, n_points=int(n_points),
                      t_eval=t_eval, events=events, switches=switches, friction=fr, stabilization=st,
-                     step=step_options, model_bound=bound)
+                     step=step_options, model_bound=bound, max_steps=int(max_steps))
     return assess(entry.runner()(req), req, entry, rtol=given[0], atol=given[1])
 
 
@@ -254,8 +273,8 @@ def _span(t_span) -> tuple[float, float]:
         t_span = (0.0, t_span)
     try:
         t0, t1 = (float(v) for v in t_span)
-    except (TypeError, ValueError):
-        raise IntegrationError(f"t_span must be two different finite times, got {t_span!r}") from None
+    except (TypeError, ValueError, OverflowError):
+        raise IntegrationError(f"t_span must be two different finite times, got {shown(t_span)}") from None
     if not (math.isfinite(t0) and math.isfinite(t1)) or t1 == t0:
         raise IntegrationError(f"t_span must be two different finite times, got {t_span}")
     return t0, t1

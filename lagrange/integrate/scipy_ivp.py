@@ -206,7 +206,8 @@ def run(req: RunRequest) -> Trajectory:
     if use_compiled:  # its IntegrationError already carries `partial` (lagrange.integrate.compiled)
         try:
             return integrate_compiled(model, method, (t0, t1), y0, t_eval, rtol=req.rtol, atol=req.atol,
-                                      max_step=req.max_step, label=f"{method} ({'; '.join(notes)})")
+                                      max_step=req.max_step, label=f"{method} ({'; '.join(notes)})",
+                                      max_steps=req.max_steps)
         except ValueError as exc:  # bad t_eval or tolerances, worded as scipy words them
             raise IntegrationError(f"integration failed: {exc}") from exc
     return _run_scipy(req, model, y0, t_eval, stabilization, notes, initial_report)
@@ -221,7 +222,7 @@ def _run_scipy(req: RunRequest, model: NumericModel, y0, t_eval, stabilization: 
     eqs, method, (t0, t1) = req.equations, req.method, req.t_span
     conservative = eqs.is_conservative
     n2 = 2 * eqs.n
-    log = StepLog(t_eval)
+    log = StepLog(t_eval, max_steps=req.max_steps)
     f = state_function(model, with_work=not conservative, log=log)
     z0 = y0 if conservative else np.append(y0, 0.0)
     jac = _jacobian(model, method, conservative)

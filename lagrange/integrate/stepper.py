@@ -31,6 +31,7 @@ import numpy as np
 from scipy.integrate import BDF, DOP853, LSODA, RK23, RK45, OdeSolver, Radau
 from scipy.optimize import brentq
 
+from ..errors import IntegrationError
 from ..records import record
 
 __all__ = ["step_loop", "STEPPABLE", "StepResult", "StepLog", "recording", "interrupt_of", "interrupted_run"]
@@ -60,8 +61,9 @@ class StepLog:
     ``t_eval`` must be ordered in the direction of integration (as ``solve_ivp`` requires).
     """
 
-    def __init__(self, t_eval):
+    def __init__(self, t_eval, max_steps: int | None = None):
         self.t_eval = np.asarray(t_eval, dtype=float)
+        self.max_steps = max_steps
         self.t: list[float] = []
         self.y: list[np.ndarray] = []
         self.last: tuple[float, np.ndarray] | None = None
@@ -102,6 +104,11 @@ class StepLog:
             self.t.append(float(te))
             self._k += 1
         self.last = (float(t_new), np.array(solver.y, dtype=float))
+        if self.max_steps is not None and self.steps >= self.max_steps and solver.status == "running":
+            raise IntegrationError(f"the run took max_steps={self.max_steps:,} steps and stopped at t={t_new:.9g}, "
+                                   "before the end of its span: raise max_steps, loosen rtol/atol, shorten the span, "
+                                   "or try a stiff method (method='Radau' or 'LSODA') if the steps are tiny",
+                                   t=float(t_new))
 
     def arrays(self) -> tuple[np.ndarray, np.ndarray]:
         """``(t, Y)`` with Y of shape (m, n_state): the output times reached, then the last accepted state

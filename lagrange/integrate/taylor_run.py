@@ -48,6 +48,6 @@ def run(req: RunRequest) -> Trajectory:
     label = f"taylor ({how}" + (f"; auto: {req.why})" if req.why else ")")
     try:
         return integrate_taylor(model, req.t_span, req.y0, t_eval, rtol=req.rtol, atol=req.atol,
-                                max_step=req.max_step, label=label)
+                                max_step=req.max_step, label=label, max_steps=req.max_steps)
     except ValueError as exc:
         raise IntegrationError(f"integration failed: {exc}") from exc

@@ -26,6 +26,7 @@ import sympy as sp
 
 from ..conventions import t
 from ..records import record
+from ..safe_sympify import lambdify as _lambdify
 from ..safe_sympify import sympify as _sympify
 from ..simplification import is_zero
 from ..symengine_bridge import FAILURES, carries, jacobian, symengine
@@ -72,7 +73,7 @@ class Holonomic:
     unilateral: bool = False
 
     def __post_init__(self):
-        normalize_fields(self)  # sympy.physics.mechanics dynamicsymbols are accepted
+        normalize_fields(self, ("expr",))  # sympy.physics.mechanics dynamicsymbols are accepted
 
 
 @record(frozen=True)
@@ -107,8 +108,8 @@ class Rough:
 
     def __post_init__(self):
         if isinstance(self.sliding, (list, tuple, sp.MatrixBase)):  # planar friction: components, kept as a tuple
-            object.__setattr__(self, "sliding", tuple(_sympify(v) for v in self.sliding))
-        normalize_fields(self)
+            object.__setattr__(self, "sliding", tuple(_sympify(v, where="Rough.sliding") for v in self.sliding))
+        normalize_fields(self, ("expr", "mu", "normal") + (() if isinstance(self.sliding, tuple) else ("sliding",)))
 
 
 @record(frozen=True)
@@ -119,7 +120,7 @@ class Nonholonomic:
     name: str = ""
 
     def __post_init__(self):
-        normalize_fields(self)
+        normalize_fields(self, ("expr",))
 
 
 @record(frozen=True)
@@ -131,8 +132,10 @@ class Differential:
     name: str = ""
 
     def __post_init__(self):
-        object.__setattr__(self, "coefficients", normalize_time(dict(self.coefficients)))
-        object.__setattr__(self, "dt", normalize_time(self.dt))
+        coefficients = {q: _sympify(a, where=f"Differential coefficient of {q}")
+                        for q, a in dict(self.coefficients).items()}
+        object.__setattr__(self, "coefficients", normalize_time(coefficients))
+        object.__setattr__(self, "dt", normalize_time(_sympify(self.dt, where="Differential.dt")))
 
     def velocity_form(self):
         return sum((_sympify(a) * q.diff(t) for q, a in self.coefficients.items()), sp.S.Zero) + _sympify(self.dt)
@@ -389,7 +392,7 @@ def _frobenius_numeric(a: list, syms: list, involved: list) -> bool | None:
 
     params = sorted(set().union(*(ai.free_symbols for ai in a)) - set(syms), key=sp.default_sort_key)
     try:
-        f = sp.lambdify(syms + params, a, modules="mpmath")
+        f = _lambdify(syms + params, a, modules="mpmath")
     except Exception:  # noqa: BLE001 - anything lambdify cannot print is left to the symbolic test
         return None
     rnd = random.Random(20456)

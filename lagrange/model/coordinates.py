@@ -132,10 +132,16 @@ def normalize_time(obj):
     return obj
 
 
-def normalize_fields(obj) -> None:
-    """:func:`normalize_time` applied to every field of a frozen dataclass (its ``__post_init__``)."""
+def normalize_fields(obj, expressions: tuple[str, ...] = ()) -> None:
+    """:func:`normalize_time` applied to every field of a frozen dataclass (its ``__post_init__``); the fields
+    named in ``expressions`` are converted first by :func:`lagrange.safe_sympify.sympify` (a string is read
+    as an expression of numbers, never evaluated; anything else that is not a number or a sympy object is
+    refused)."""
     from dataclasses import fields
 
+    for name in expressions:
+        where = f"{type(obj).__name__}.{name}"
+        object.__setattr__(obj, name, _sympify(getattr(obj, name), where=where))
     for f in fields(obj):
         object.__setattr__(obj, f.name, normalize_time(getattr(obj, f.name)))
 

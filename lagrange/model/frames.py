@@ -26,6 +26,7 @@ import sympy as sp
 from ..conventions import t
 from ..errors import DeclarationError
 from ..records import record
+from ..safe_sympify import matrix as _matrix
 from ..safe_sympify import sympify as _sympify
 from ..simplification import trigsimp
 from .bodies import as_vector
@@ -51,7 +52,7 @@ class Frame:
 
     def __init__(self, origin=(0, 0, 0), rotation=None, parent: Frame | None = None, name: str = ""):
         self.origin = as_vector(origin, f"origin of frame {name!r}")
-        self.rotation = sp.Matrix(rotation) if rotation is not None else sp.eye(3)
+        self.rotation = _matrix(rotation, where=f"rotation of frame {name!r}") if rotation is not None else sp.eye(3)
         if self.rotation.shape != (3, 3):
             raise ValueError("a frame rotation must be a 3x3 matrix (columns: the frame's axes)")
         self.parent = parent
@@ -134,7 +135,8 @@ class Ellipsoid:
     name: str = ""
 
     def __post_init__(self):
-        a, b = sp.nsimplify(self.a), sp.nsimplify(self.b)  # exact symbols: floats enter only at code generation
+        # exact symbols: floats enter only at code generation
+        a, b = (sp.nsimplify(_sympify(v, where=f"Ellipsoid.{k}")) for k, v in (("a", self.a), ("b", self.b)))
         if a.is_positive is False or b.is_positive is False or (a - b).is_negative:
             raise DeclarationError(f"an ellipsoid needs a ≥ b > 0 (equatorial and polar semi-axes), got a={a}, b={b}")
         object.__setattr__(self, "a", a)

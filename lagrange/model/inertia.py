@@ -37,6 +37,7 @@ import sympy as sp
 
 from ..errors import DeclarationError
 from ..records import record
+from ..safe_sympify import matrix as _matrix
 from ..safe_sympify import sympify as _sympify
 from ..simplification import is_zero, simplify
 
@@ -98,7 +99,7 @@ def _vector(values, what: str) -> sp.Matrix:
 
 
 def _matrix3(R, what: str) -> sp.Matrix:
-    M = sp.Matrix(R)
+    M = _matrix(R, where=what)
     if M.shape != (3, 3):
         raise DeclarationError(f"{what} must be 3x3, got shape {M.shape}", subject=what)
     return M

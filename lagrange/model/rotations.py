@@ -26,6 +26,7 @@ import sympy as sp
 
 from ..conventions import t
 from ..records import record
+from ..safe_sympify import matrix as _matrix
 from ..safe_sympify import sympify as _sympify
 from ..simplification import trigsimp
 from .coordinates import normalize_fields, time_derivative
@@ -46,18 +47,21 @@ __all__ = [
 
 def rot_x(a) -> sp.Matrix:
     """Rotation by angle ``a`` about x (columns: the rotated axes in the old frame)."""
+    a = _sympify(a, where="rotation angle")
     c, s = sp.cos(a), sp.sin(a)
     return sp.Matrix([[1, 0, 0], [0, c, -s], [0, s, c]])
 
 
 def rot_y(a) -> sp.Matrix:
     """Rotation by angle ``a`` about y."""
+    a = _sympify(a, where="rotation angle")
     c, s = sp.cos(a), sp.sin(a)
     return sp.Matrix([[c, 0, s], [0, 1, 0], [-s, 0, c]])
 
 
 def rot_z(a) -> sp.Matrix:
     """Rotation by angle ``a`` about z."""
+    a = _sympify(a, where="rotation angle")
     c, s = sp.cos(a), sp.sin(a)
     return sp.Matrix([[c, -s, 0], [s, c, 0], [0, 0, 1]])
 
@@ -77,7 +81,7 @@ class EulerAngles:
     phi: sp.Expr
 
     def __post_init__(self):
-        normalize_fields(self)  # sympy.physics.mechanics dynamicsymbols are accepted
+        normalize_fields(self, ("psi", "theta", "phi"))  # sympy.physics.mechanics dynamicsymbols are accepted
 
     @property
     def matrix(self) -> sp.Matrix:
@@ -129,7 +133,7 @@ class Quaternion:
     name: str = "unit quaternion"
 
     def __post_init__(self):
-        normalize_fields(self)
+        normalize_fields(self, ("q0", "q1", "q2", "q3"))
 
     @property
     def components(self) -> tuple:
@@ -186,7 +190,7 @@ class RotationSequence:
                 raise ValueError(f"RotationSequence takes (axis, angle) pairs, got {item!r}") from None
             if axis not in _ELEMENTARY:
                 raise ValueError(f"rotation axis {axis!r} must be 'x', 'y' or 'z'")
-            steps.append((axis, _sympify(angle)))
+            steps.append((axis, _sympify(angle, where=f"RotationSequence angle about {axis}")))
         if not steps:
             raise ValueError("RotationSequence needs at least one (axis, angle) pair")
         self.rotations: tuple = tuple(steps)
@@ -241,7 +245,7 @@ def as_rotation(orientation) -> sp.Matrix:
     """The rotation matrix of an orientation (EulerAngles, Quaternion, RotationSequence or a 3x3 matrix)."""
     if isinstance(orientation, (EulerAngles, Quaternion, RotationSequence)):
         return orientation.matrix
-    R = sp.Matrix(orientation)
+    R = _matrix(orientation, where="orientation")
     if R.shape != (3, 3):
         raise ValueError(f"an orientation must be a 3x3 rotation matrix, got shape {R.shape}")
     return R

@@ -336,6 +336,10 @@ class System:
     # --- validation -------------------------------------------------------------------------
     @staticmethod
     def _check_expr(what, expr, coords, presc, max_order, problems, declared) -> None:
+        infinite = [str(c) for c in (sp.nan, sp.zoo, sp.oo, -sp.oo) if expr.has(c)]
+        if infinite:
+            problems.append(f"{what} holds {', '.join(infinite)}, not a finite number (a division by zero or an "
+                            "undefined limit while building it?): give finite expressions")
         names = {coordinate_name(q) for q in coords}
         reserved = set()
         for n in names:

@@ -13,11 +13,11 @@ from collections.abc import Sequence
 from pathlib import Path
 
 import numpy as np
-import sympy as sp
 
 from ..conventions import t
 from ..errors import LagrangeError
 from ..model.coordinates import to_symbols
+from ..safe_sympify import lambdify as _lambdify
 
 __all__ = ["animate", "animation_html", "scene_points", "InlineAnimation"]
 
@@ -51,12 +51,12 @@ def scene_points(system, trajectory) -> tuple[np.ndarray, list]:
     unknown = set().union(*(e.free_symbols for e in exprs)) - set(syms) - {t}
     if unknown:
         raise LagrangeError(f"cannot draw: no values for {', '.join(sorted(map(str, unknown)))}")
-    f = sp.lambdify([t, syms], [list(e) for e in exprs], "numpy")
+    f = _lambdify([t, syms], [list(e) for e in exprs], "numpy")
     n = len(coords)
     P = np.array([np.array(f(ti, yi[:n]), dtype=float) for ti, yi in zip(trajectory.t, trajectory.y)])
     axes = []
     for idx, R in frames:
-        g = sp.lambdify([t, syms], R, "numpy")
+        g = _lambdify([t, syms], R, "numpy")
         axes.append((idx, np.array([np.array(g(ti, yi[:n]), dtype=float) for ti, yi in zip(trajectory.t,
                                                                                            trajectory.y)])))
     return P, axes

@@ -58,6 +58,7 @@ from __future__ import annotations
 import keyword
 import math
 import runpy
+import stat
 import tomllib
 import unicodedata
 from dataclasses import field
@@ -81,10 +82,29 @@ _TOML_KEYS = {"name", "description", "coordinates", "parameters", "T", "V", "P",
 _PARTICLE_KEYS = {"mass", "position", "name"}
 #: ``[simulate]`` keys: ``t_end`` and the keyword options of :func:`lagrange.integrate.run.simulate` that are data
 _SIMULATE_KEYS = {"t_end", "method", "rtol", "atol", "n_points", "max_step", "backend", "friction",
-                  "friction_epsilon", "stabilization", "baumgarte", "project_initial", "step", "loop"}
+                  "friction_epsilon", "stabilization", "baumgarte", "project_initial", "step", "loop", "max_steps",
+                  "max_output_bytes"}
 #: particle positions are squared in T, so they get a tighter limit on their multiplied-out size
 _POSITION_TERMS = 100
 MAX_SPEC_BYTES = 1_000_000
+#: arrays and tables nest at most this deep in a spec (its deepest legitimate value, a list of particle
+#: positions, is three levels down); deeper nesting is refused before anything walks it
+MAX_SPEC_NESTING = 16
+
+
+def _check_nesting(data, path: Path) -> None:
+    """SpecError when arrays or tables in ``data`` nest deeper than :data:`MAX_SPEC_NESTING` (walked without
+    recursion)."""
+    todo = [(data, 0)]
+    while todo:
+        node, depth = todo.pop()
+        if depth > MAX_SPEC_NESTING:
+            raise SpecError(f"{path}: arrays or tables nested deeper than {MAX_SPEC_NESTING} levels; a spec "
+                            "needs at most a few")
+        if isinstance(node, dict):
+            todo.extend((v, depth + 1) for v in node.values())
+        elif isinstance(node, list):
+            todo.extend((v, depth + 1) for v in node)
 
 
 @record(frozen=True)
@@ -233,13 +253,20 @@ def load_toml(path: Path) -> LoadedSpec:
         identifiers or clash, expressions the safe parser rejects, non-finite numbers, or an invalid system.
     """
     try:
-        if path.stat().st_size > MAX_SPEC_BYTES:
+        st = path.stat()
+        if not stat.S_ISREG(st.st_mode):  # a FIFO or a device would block the read or never end
+            raise SpecError(f"{path}: not a regular file; give the path of a .toml file")
+        if st.st_size > MAX_SPEC_BYTES:
             raise SpecError(f"{path}: larger than {MAX_SPEC_BYTES} bytes; a spec is a short text file")
         data = tomllib.loads(path.read_text(encoding="utf-8"))
     except (tomllib.TOMLDecodeError, UnicodeDecodeError) as exc:
         raise SpecError(f"{path}: not valid TOML: {exc}") from None
+    except RecursionError:  # tomllib parses nested arrays and inline tables recursively
+        raise SpecError(f"{path}: arrays or tables nested deeper than {MAX_SPEC_NESTING} levels; a spec needs at "
+                        "most a few") from None
     except OSError as exc:
         raise SpecError(f"{path}: cannot read: {exc}") from None
+    _check_nesting(data, path)
     unknown = sorted(set(data) - _TOML_KEYS)
     if unknown:
         raise SpecError(f"{path}: unknown key(s) {', '.join(unknown)} (allowed: {', '.join(sorted(_TOML_KEYS))})")
@@ -333,6 +360,8 @@ def load_spec(spec: str) -> LoadedSpec:
     path = Path(spec)
     if path.suffix.lower() in (".toml", ".py"):
         if not path.is_file():
+            if path.exists():  # a directory, a FIFO or a device: never opened (a FIFO would block the read)
+                raise SpecError(f"spec file {spec!r} is not a regular file; give the path of a spec file")
             raise SpecError(f"spec file {spec!r} does not exist")
         return load_toml(path) if path.suffix.lower() == ".toml" else _load_python(path)
     if spec.lower().startswith("greenspan-"):

@@ -155,7 +155,7 @@ def _as_objects(options: dict, flags: Mapping, label: str) -> dict:
     (:class:`~lagrange.integrate.options.FrictionOptions`, :class:`~lagrange.integrate.options.Stabilization`),
     every value validated: a SpecError names the ``[simulate]`` key (or flag) and the limit."""
     from ..errors import MethodError, OptionError
-    from ..integrate.options import MAX_POINTS, FrictionOptions, Stabilization
+    from ..integrate.options import MAX_POINTS, MAX_STEPS, FrictionOptions, Stabilization
 
     def refuse(key: str, exc: Exception):
         return SpecError(f"{_where(key, flags, label)}: {exc}")
@@ -165,6 +165,10 @@ def _as_objects(options: dict, flags: Mapping, label: str) -> dict:
         if isinstance(n, bool) or not isinstance(n, int) or not 2 <= n <= MAX_POINTS:
             raise SpecError(f"{_where('n_points', flags, label)}: must be an integer between 2 and {MAX_POINTS:,}, "
                             f"got {n!r}")
+    for key, limit in (("max_steps", MAX_STEPS), ("max_output_bytes", 2**62)):
+        v = options.get(key, 1)
+        if isinstance(v, bool) or not isinstance(v, int) or not 1 <= v <= limit:
+            raise SpecError(f"{_where(key, flags, label)}: must be an integer between 1 and {limit:.0e}, got {v!r}")
     if "friction_epsilon" in options or "friction" in options:
         try:
             options["friction"] = FrictionOptions(options.get("friction", "events"),

@@ -24,6 +24,7 @@ import numpy as np
 from scipy.integrate import DOP853, RK23, RK45
 
 from ..errors import IntegrationError, LagrangeError, MethodError
+from ..integrate.options import DEFAULT_MAX_OUTPUT_BYTES, DEFAULT_MAX_STEPS, check_output_size, check_step_count
 from ..records import record
 
 __all__ = ["integrate_ensemble", "EnsembleResult", "METHODS"]
@@ -177,7 +178,8 @@ def _dense(mem: _Members, scheme, t_old, h, y_old, y_new, K, rows):
 
 def integrate_ensemble(model, t_span, Y0, P=None, *, method: str = "DOP853", rtol: float = 1e-9,
                        atol: float = 1e-11, t_eval=None, n_points: int = 1001,
-                       max_step: float = np.inf) -> EnsembleResult:
+                       max_step: float = np.inf, max_steps: int = DEFAULT_MAX_STEPS,
+                       max_output_bytes: int = DEFAULT_MAX_OUTPUT_BYTES) -> EnsembleResult:
     """Integrate ``model`` from every row of ``Y0`` (with the parameter row ``P[i]``), each member with its
     own adaptive step (see the module docstring).
 
@@ -193,6 +195,9 @@ def integrate_ensemble(model, t_span, Y0, P=None, *, method: str = "DOP853", rto
         ``pip install "lagrange-dynamics[heyoka]"``)
     rtol, atol, max_step : as in :func:`scipy.integrate.solve_ivp`
     t_eval : output times (monotone in the direction of integration); default ``n_points`` equally spaced
+    max_steps, max_output_bytes : as in :func:`lagrange.integrate.run.simulate`: a ``max_step`` that would need
+        more steps over the span, or output (members × times × 2n × 8 bytes) beyond the limit, is refused up
+        front (:class:`~lagrange.errors.OptionError`)
 
     Returns
     -------
@@ -227,6 +232,9 @@ def integrate_ensemble(model, t_span, Y0, P=None, *, method: str = "DOP853", rto
     if np.any(direction * np.diff(t_eval) < 0) or np.any(direction * (t_eval - t0) < 0) or \
             np.any(direction * (t_eval - t1) > 0):
         raise IntegrationError("t_eval must be sorted in the direction of integration and lie within t_span")
+    if np.isfinite(max_step) and max_step > 0:
+        check_step_count(abs(t1 - t0), float(max_step), "max_step", max_steps)
+    check_output_size(k * len(t_eval), Y0.shape[1], max_output_bytes)
     if method == "heyoka":  # heyoka's batch mode: lagrange/integrate/heyoka_batch.py
         from ..integrate.heyoka_batch import integrate_ensemble_heyoka
 

@@ -19,10 +19,10 @@ import math
 from collections.abc import Mapping, Sequence
 
 import numpy as np
-import sympy as sp
 
 from ..discrete import greenspan as gs
 from ..model.coordinates import to_symbols
+from ..safe_sympify import lambdify as _lambdify
 from .task import SimulationTask
 
 __all__ = ["top_setup", "fall_events", "fall_summary", "stability_task", "stability_map"]
@@ -38,7 +38,7 @@ def fall_events(system) -> list:
     """Terminal events: the height of P2, P3 or P4 crossing zero downwards."""
     syms = [to_symbols(q, system.coordinates) for q in system.coordinates]
     heights = [to_symbols(b.position[2], system.coordinates) for b in system.bodies[1:]]
-    z = sp.lambdify(syms, heights, "math")
+    z = _lambdify(syms, heights, "math")
     n = len(syms)
     events = []
     for i in range(len(heights)):

@@ -52,6 +52,9 @@ def _values(over: Mapping[str, Sequence[float]]) -> dict[str, np.ndarray]:
                 raise
             problems.append(f"{name}: values must be numbers ({exc})")
             continue
+        except OverflowError:
+            problems.append(f"{name}: values must be numbers within the floating-point range (about 1.8e308)")
+            continue
         if arr.ndim != 1 or arr.size == 0:
             problems.append(f"{name}: give a non-empty 1-D sequence of values")
         elif not np.all(np.isfinite(arr)):

@@ -184,6 +184,14 @@ HOSTILE_TOML = {
     "not_toml": ('coordinates = [\n', "not valid TOML"),
     "undeclared_function_of_t": ('coordinates = ["x"]\nT = "x_dot**2/2"\nV = "y"\n', "unknown name 'y'"),
     "no_kinetic_energy": ('coordinates = ["x"]\nV = "x**2"\n', "no kinetic energy"),
+    # nesting: tomllib parses arrays and inline tables recursively (a RecursionError), and a parsed deep value
+    # must not reach code that walks it
+    "nested_arrays_deep": ('coordinates = ["x"]\nT = "x_dot**2/2"\nV = ' + "[" * 5000 + "]" * 5000 + "\n",
+                           "nested deeper than"),
+    "nested_arrays_params": ('coordinates = ["x"]\nparameters = ["m"]\nT = "m*x_dot**2/2"\n[params]\nm = '
+                             + "[" * 60 + "1" + "]" * 60 + "\n", "nested deeper than"),
+    "nested_inline_tables": ('coordinates = ["x"]\nT = "x_dot**2/2"\nV = ' + "{a = " * 3000 + "1" + "}" * 3000
+                             + "\n", "nested deeper than"),
 }
 
 
@@ -240,6 +248,17 @@ def test_hostile_toml_rejected(case, tmp_path, monkeypatch, no_sympy_eval):
         load_spec(str(path))
     assert fragment in str(exc.value), str(exc.value)
     assert not (tmp_path / SENTINEL).exists()
+
+
+@pytest.mark.skipif(not hasattr(__import__("os"), "mkfifo"), reason="needs FIFOs (POSIX)")
+def test_spec_that_is_a_fifo_is_refused_at_once(tmp_path):
+    """A FIFO given as the spec would block the read until someone writes to it: refused without opening."""
+    import os
+
+    path = tmp_path / "spec.toml"
+    os.mkfifo(path)
+    with _time_limit(10), pytest.raises(SpecError, match="not a regular file"):
+        load_spec(str(path))
 
 
 def test_hostile_spec_through_the_cli_runs_nothing(tmp_path, monkeypatch, capsys):
