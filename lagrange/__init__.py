@@ -101,6 +101,7 @@ _EXPORTS: dict[str, str] = {
     "apparent_gravity": ".model.frames",
     "Frame": ".model.frames",
     "inputs": ".model.inputs",
+    "Quadrature": ".model.integrals",
 }
 
 
@@ -125,6 +126,7 @@ __all__ = [
     "inputs",
     "delta",
     "System",
+    "Quadrature",
     "Particle",
     "Force",
     "RigidBody",
