@@ -229,3 +229,17 @@ def test_nested_integrals_are_one_multiple_integral_and_an_integral_inside_an_in
 
 def test_default_rule_is_the_documented_one():
     assert (DEFAULT_RULE.order, DEFAULT_RULE.panels) == (8, 8)
+
+
+def test_structural_derivation_is_not_chosen_for_an_integral_in_P():
+    """From 6 coordinates "auto" derives structurally, which has no quadrature: an integral in P keeps the expanded
+    derivation (and asking for structural is refused by name)."""
+    qs = lg.coordinates("q1 q2 q3 q4 q5 q6")
+    r = sp.Symbol("r", real=True)
+    bodies = [lg.Particle(1, (q,)) for q in qs]
+    plain = lg.System(list(qs), bodies=bodies)
+    assert plain.derivation == "structural"
+    P = -lg.Quadrature(sp.sqrt(qs[0].diff(t) ** 2 + r**2), (r, 0, 1))
+    assert lg.System(list(qs), bodies=bodies, P=P).derivation == "expanded"
+    with pytest.raises(lg.DeclarationError, match="structural.*integral"):
+        lg.System(list(qs), bodies=bodies, P=P, derivation="structural")

@@ -111,6 +111,8 @@ class Equations:
         """True when an integral sympy could not evaluate remains in M, f, the constraint blocks or the power
         ``dh/dt`` (:mod:`lagrange.model.integrals`): generated code evaluates it by quadrature
         (:mod:`lagrange.codegen.quadrature`), and the Taylor method and heyoka refuse the equations."""
+        if self.is_structural:  # (never: System keeps integrals to the expanded derivation; M, f are lazy there)
+            return False
         h = self.__dict__.get("_quadrature")
         if h is None:
             h = any(sp.sympify(e).has(sp.Integral) for e in (self.mass_matrix, self.forcing, self.jacobi_rate,
