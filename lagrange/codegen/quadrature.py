@@ -29,12 +29,13 @@ the composite rule converges algebraically in the panels.
 ``order``-point rule is exact for polynomials of degree 2·order − 1). Measured on a uniform disc sliding and
 spinning (``benchmarks/results/quadrature.md``, written by ``benchmarks/quadrature.py``, against the closed forms
 of Farkas et al. 2003): with :data:`DEFAULT_RULE` (8 panels × 8 points per variable) the friction force and torque
-are within 1e-4 relative while the instantaneous centre is inside the disc and within 1e-8 outside it (1e-5 and
-1e-13 with 16 panels × 8); a right-hand side with three integrals over the disc costs about 0.5 ms in the python
-backend and 60 µs in numba. Choose a finer :class:`Rule` for tighter runs (``System.compile(...,
-quadrature=Rule(16, 8))``, :func:`lagrange.codegen.numeric.compile_equations`); ``simulate`` uses the default.
-Auxiliary functions (diagnostics, the generated Jacobian of implicit methods, the power of the python backend)
-use :data:`DEFAULT_RULE`.
+are within 1e-4 relative (6e-5) while the instantaneous centre is inside the disc and within 1e-8 outside it
+(3e-6 and 2e-14 with 8 panels × 16 points, ``Rule(16, 8)``, at four times the cost); a right-hand side with three
+integrals over the disc costs about 0.4 ms in the python backend and 55 µs in numba. Choose a finer
+:class:`Rule` for tighter runs (``System.compile(..., quadrature=Rule(16, 8))``,
+:func:`lagrange.codegen.numeric.compile_equations`); ``simulate`` uses the default. Auxiliary functions
+(diagnostics, the generated Jacobian of implicit methods, the power of the python backend) use
+:data:`DEFAULT_RULE`.
 
 Backends that need an analytic, closed right-hand side refuse equations with integrals
 (:attr:`lagrange.derive.equations.Equations.has_quadrature`): the Taylor tape and heyoka
