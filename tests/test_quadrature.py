@@ -212,6 +212,8 @@ def test_kinetic_energy_as_an_integral_gives_the_mass_matrix_by_quadrature():
     assert model.mass_matrix(0.0, [0.1, 0.2])[0, 0] == pytest.approx(3.0 * 8 / 3, rel=1e-14)
     tr = s.simulate(1.0, {th: 0.1, "theta_dot": 0.0}, p, rtol=1e-11, atol=1e-13)
     assert tr.y[-1, 0] == pytest.approx(0.1 * np.cos(np.sqrt(5.0 / 8.0)), abs=1e-9)
+    with pytest.raises(lg.LagrangeError, match="quadrature"):  # H is built symbolically from T: refused by name
+        s.simulate(1.0, {th: 0.1, "theta_dot": 0.0}, p, method="gl4", step=0.01)
 
 
 def test_nested_integrals_are_one_multiple_integral_and_an_integral_inside_an_integrand_is_refused():
