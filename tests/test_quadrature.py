@@ -263,3 +263,16 @@ def test_generated_jacobian_differentiates_under_the_integral_sign():
     ref = DISC.simulate(0.3, {X: 0, Y: 0, TH: 0, "x_dot": 2.4, "y_dot": 1.8, "theta_dot": 1.0}, UNIT,
                         method="DOP853", rtol=1e-11, atol=1e-13)
     assert np.allclose(tr.y[-1], ref.y[-1], rtol=1e-7, atol=1e-9)
+
+
+def test_an_integration_variable_named_like_a_coordinate_is_refused():
+    """The derivation writes x(t) and ẋ as plain symbols x and x_dot: an integration variable of that name would
+    capture them (a silently wrong force); it is refused by name. Another name is accepted."""
+    x = lg.coordinates("x")
+    xd = x.diff(t)
+    for name in ("x", "x_dot", "t"):
+        u = sp.Symbol(name, real=True)
+        with pytest.raises(lg.DeclarationError, match="name of a coordinate"):
+            lg.System([x], T=xd**2 / 2, P=-lg.Quadrature(sp.sqrt(xd**2 + u**2), (u, 0, 1)))
+    u = sp.Symbol("u", real=True)
+    assert lg.System([x], T=xd**2 / 2, P=-lg.Quadrature(sp.sqrt(xd**2 + u**2), (u, 0, 1))).P.has(sp.Integral)

@@ -13,7 +13,8 @@ written as one multiple integral.
 
 What quadrature cannot take is refused here with a :class:`~lagrange.errors.DeclarationError` naming it: an
 integral without both limits (indefinite), an infinite or non-real limit, a limit that depends on a velocity,
-an integration variable that is not a plain symbol, another integral inside an integrand (other than the whole
+an integration variable that is not a plain symbol or has the name of a coordinate, a velocity or t, another
+integral inside an integrand (other than the whole
 integrand), and a ``Sum``, ``Product`` or unevaluated derivative of the integration variable inside the
 integrand.
 """
@@ -90,12 +91,14 @@ def quadrature_problem(integral: sp.Integral) -> str | None:
     return None
 
 
-def evaluate_integrals(expr, what: str, problems: list):
+def evaluate_integrals(expr, what: str, problems: list, reserved=frozenset()):
     """``expr`` with every ``Integral`` replaced by its closed form where sympy finds one.
 
     An integral sympy cannot evaluate within :data:`SECONDS` (per attempt) is kept for quadrature in generated
     code when :func:`quadrature_problem` accepts it; otherwise a problem naming it and ``what`` is appended to
-    ``problems`` (the caller raises one DeclarationError for all)."""
+    ``problems`` (the caller raises one DeclarationError for all). ``reserved``: names an integration variable
+    may not have (the coordinates, their velocities ``x_dot`` and ``t``: the derivation writes those as plain
+    symbols of the same names, which the integral would capture)."""
     expr = _sympify(expr)
     if not expr.has(sp.Integral):
         return expr
@@ -108,7 +111,9 @@ def evaluate_integrals(expr, what: str, problems: list):
         value = None if isinstance(integral, Quadrature) else _closed_form(integral)
         if value is not None:
             return value
-        why = quadrature_problem(integral)
+        taken = [v for v in integral.variables if getattr(v, "name", None) in reserved]
+        why = (f"its integration variable {taken[0]} has the name of a coordinate, a velocity or t, which the "
+               "derivation would confuse with it: rename the variable") if taken else quadrature_problem(integral)
         if why is not None:
             problems.append(f"{what} contains the integral {integral}, which sympy cannot evaluate in closed form "
                             f"and generated code cannot evaluate by quadrature: {why}")

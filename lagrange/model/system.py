@@ -211,10 +211,12 @@ class System:
                 continue
             presc[key] = val
 
+        reserved = frozenset({"t", *names, *(f"{n}_dot" for n in names), *(f"{n}_ddot" for n in names)})
+
         def prep(expr, what):
             e = _sym(expr, what, problems)
             check_declared(e, what=what)  # before anything works on it (lagrange.budget)
-            e = evaluate_integrals(e, what, problems)
+            e = evaluate_integrals(e, what, problems, reserved)
             if presc:
                 e = e.subs(presc).doit(integrals=False)  # (an integral kept for quadrature stays)
             return e
@@ -254,7 +256,7 @@ class System:
         if presc and forces is not None:
             raw_forces = _substitute_forces(forces, presc)
         F = generalized_forces(raw_forces, coords, problems) if coords else {}
-        F = {q: evaluate_integrals(f, f"F_{coordinate_name(q)}", problems) for q, f in F.items()}
+        F = {q: evaluate_integrals(f, f"F_{coordinate_name(q)}", problems, reserved) for q, f in F.items()}
         for q, f in F.items():
             check_declared(f, what=f"the generalized force F_{coordinate_name(q)}")
 
