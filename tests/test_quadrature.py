@@ -276,3 +276,24 @@ def test_an_integration_variable_named_like_a_coordinate_is_refused():
             lg.System([x], T=xd**2 / 2, P=-lg.Quadrature(sp.sqrt(xd**2 + u**2), (u, 0, 1)))
     u = sp.Symbol("u", real=True)
     assert lg.System([x], T=xd**2 / 2, P=-lg.Quadrature(sp.sqrt(xd**2 + u**2), (u, 0, 1))).P.has(sp.Integral)
+
+
+def test_a_rod_that_does_not_turn_is_integrated_without_a_division_by_zero():
+    """The kink of |v| along a rod is at −B/(2A) with A = θ̇²: at θ̇ = 0 there is none, and generated code must not
+    divide by zero (python arrays, python loops and numba alike): F_x = −f l ẋ/|v| exactly."""
+    x, y, th = lg.coordinates("x y theta")
+    f, l = lg.parameters("f l")
+    r = sp.Symbol("r", real=True)
+    xd, yd, thd = x.diff(t), y.diff(t), th.diff(t)
+    speed = sp.sqrt((xd - r * thd * sp.sin(th)) ** 2 + (yd + r * thd * sp.cos(th)) ** 2)
+    T = (xd**2 + yd**2 + thd**2) / 2
+    smooth = lg.System([x, y, th], T=T, P=-f * lg.Quadrature(speed, (r, 0, l)))
+    # Γ(1 + sin² + cos²) = 1, which numpy does not apply elementwise: the loop flavour in python
+    looped = lg.System([x, y, th], T=T, P=-f * lg.Quadrature(speed * sp.gamma(1 + sp.sin(r) ** 2 + sp.cos(r) ** 2),
+                                                              (r, 0, l)))
+    y0 = np.array([0.0, 0.0, 0.4, 0.6, 0.8, 0.0])
+    for s in (smooth, looped):
+        for backend in ("python", "numba"):
+            model = s.compile({"f": 0.5, "l": 2.0}, backend=backend)
+            acc = np.asarray(model.rhs(0.0, y0, model._pcall))
+            assert acc[3] == pytest.approx(-0.5 * 2.0 * 0.6, rel=1e-13) and acc[4] == pytest.approx(-0.8, rel=1e-13)

@@ -147,7 +147,8 @@ def _breakpoints(integrands: tuple, var, known: set) -> list:
     symbols only (the outer integration variables, the state, t and the parameters): the vertex −B/(2A) of
     every square root of a quadratic A var² + B var + C (its smallest value: |v| of a rigid body's element along
     a line is such a root, with a kink where the line passes through the instantaneous centre) and the root of
-    every Abs or sign of a linear function of ``var``. Other integrands get none."""
+    every Abs or sign of a linear function of ``var``, each as ``(numerator, denominator)`` (generated code skips
+    a point whose denominator is zero: a rod that does not turn). Other integrands get none."""
     found = []
     for e in integrands:
         for node in sp.preorder_traversal(e):
@@ -166,7 +167,7 @@ def _breakpoints(integrands: tuple, var, known: set) -> list:
             if poly.degree() != degree or not all(c.free_symbols <= known for c in poly.all_coeffs()):
                 continue
             c = poly.all_coeffs()
-            point = -c[1] / (2 * c[0]) if degree == 2 else -c[1] / c[0]
+            point = (-c[1], 2 * c[0]) if degree == 2 else (-c[1], c[0])  # (numerator, denominator)
             if point not in found:
                 found.append(point)
     return found
@@ -226,9 +227,11 @@ def _array_lines(g: int, group: QuadratureGroup) -> list[str] | None:
         lines.append(f"qlo = numpy.broadcast_to({pr(lo)}, ({n},))")
         lines.append(f"qL = numpy.broadcast_to({pr(hi)}, ({n},)) - qlo")
         cuts = [f"numpy.zeros({n})"]
-        if points:
-            ratios = ", ".join(f"numpy.broadcast_to(({pr(b)} - qlo)/qL, ({n},))" for b in points)
-            lines.append(f"qt = numpy.sort(numpy.clip(numpy.nan_to_num(numpy.stack([{ratios}])), 0.0, 1.0), axis=0)")
+        if points:  # (a zero denominator or interval gives nan or inf: cut at an end instead)
+            ratios = ", ".join(f"numpy.broadcast_to((({pr(a)})/({pr(b)}) - qlo)/qL, ({n},))" for a, b in points)
+            lines.append("with numpy.errstate(divide='ignore', invalid='ignore'):")
+            lines.append(f"    qt = numpy.sort(numpy.clip(numpy.nan_to_num(numpy.stack([{ratios}])), 0.0, 1.0), "
+                         "axis=0)")
             cuts.append("qt")
         cuts.append(f"numpy.ones({n})")
         lines.append(f"qa = qlo + qL*numpy.vstack([{', '.join(cuts)}])")
@@ -258,8 +261,10 @@ def _loop_lines(g: int, group: QuadratureGroup, scalar_print) -> list[str]:
         lines.append(f"{indent}qt{tag} = np.empty({len(points) + 2})")
         lines.append(f"{indent}qt{tag}[0] = 0.0")
         lines.append(f"{indent}qt{tag}[{len(points) + 1}] = 1.0")
-        for j, b in enumerate(points, start=1):
-            lines.append(f"{indent}qr = (({scalar_print(b)}) - qlo{tag})/qL{tag} if qL{tag} != 0.0 else 0.0")
+        for j, (a, b) in enumerate(points, start=1):
+            lines.append(f"{indent}qd = {scalar_print(b)}")
+            lines.append(f"{indent}qr = (({scalar_print(a)})/qd - qlo{tag})/qL{tag} if qd != 0.0 and qL{tag} != 0.0 "
+                         "else 0.0")
             lines.append(f"{indent}qt{tag}[{j}] = min(max(qr, 0.0), 1.0) if qr == qr else 0.0")
         if points:
             lines.append(f"{indent}qt{tag}.sort()")
