@@ -112,6 +112,8 @@ _EXPORTS: dict[str, str] = {
     "spherical": ".model.joints",
     "spring_potential": ".model.joints",
     "damper_power": ".model.joints",
+
+    "Quadrature": ".model.integrals",
 }
 
 
@@ -136,6 +138,7 @@ __all__ = [
     "inputs",
     "delta",
     "System",
+    "Quadrature",
     "Particle",
     "Force",
     "RigidBody",

@@ -15,7 +15,8 @@ import sympy as sp
 from lagrange import Particle, t
 from lagrange.corpus import Problem
 
-__all__ = ["variant", "planar_point", "planar_point_velocity", "rod_from_end", "dry_friction_along_rod"]
+__all__ = ["variant", "planar_point", "planar_point_velocity", "rod_from_end", "dry_friction_along_rod",
+           "spinning_disc_friction"]
 
 
 def variant(base: Problem, *, id: str, title: str, source: str, **changes) -> Problem:  # noqa: A002 - Problem's field
@@ -72,3 +73,37 @@ def dry_friction_along_rod(f, x, y, theta, lo, hi):
         return (2 * a * r + b) * Q / (4 * a) + (4 * a * c - b**2) / (8 * ra**3) * sp.log(2 * ra * Q + 2 * a * r + b)
 
     return -f * (F(hi) - F(lo))
+
+
+def spinning_disc_friction(eps):
+    r"""Closed forms of the dry friction on a uniform disc (radius R, normal load N, friction coefficient μ)
+    sliding at speed v and spinning at ω on a plane, as functions of :math:`\varepsilon = v/(R\omega)`
+    (Farkas, Bartels, Unger & Wolf, Phys. Rev. Lett. 90, 248302 (2003), eq. (2)): the force
+    :math:`F = \mu N\,\mathcal F(\varepsilon)` against the sliding and the torque :math:`\mu N R\,
+    \mathcal T(\varepsilon)` against the spin, with E, K the complete elliptic integrals of parameter m = k²:
+
+    .. math::
+
+        \mathcal F = \tfrac{4}{3\pi}\,\frac{(\varepsilon^2+1)E(\varepsilon^2) + (\varepsilon^2-1)K(\varepsilon^2)}
+        {\varepsilon},\qquad
+        \mathcal T = \tfrac{4}{9\pi}\big[(4-2\varepsilon^2)E(\varepsilon^2) + (\varepsilon^2-1)K(\varepsilon^2)\big]
+        \quad(\varepsilon\le 1),
+
+        \mathcal F = \tfrac{4}{3\pi}\big[(\varepsilon^2+1)E(\varepsilon^{-2}) - (\varepsilon^2-1)K(\varepsilon^{-2})\big],
+        \quad
+        \mathcal T = \tfrac{4}{9\pi}\Big[(4\varepsilon-2\varepsilon^3)E(\varepsilon^{-2})
+        + \frac{(\varepsilon^2-1)(2\varepsilon^2-3)}{\varepsilon}K(\varepsilon^{-2})\Big]\quad(\varepsilon\ge 1).
+
+    Returns ``(F, T)`` as sympy Piecewise expressions of ``eps`` (the two branches agree at ε = 1: 8/(3π) and
+    8/(9π)). They were checked against the disc taken as rings, each ring's integral of |v| in closed form with E
+    (Wells Prob. 6.15), to 1e-14 (``tests/test_quadrature.py``)."""
+    e2 = eps**2
+    E, K = sp.elliptic_e, sp.elliptic_k
+    F = sp.Piecewise((8 / (3 * sp.pi), sp.Eq(eps, 1)),  # (ε² − 1)K: 0·∞ at ε = 1; its limit
+                     (4 / (3 * sp.pi) * ((e2 + 1) * E(e2) + (e2 - 1) * K(e2)) / eps, eps <= 1),
+                     (4 / (3 * sp.pi) * ((e2 + 1) * E(1 / e2) - (e2 - 1) * K(1 / e2)), True))
+    T = sp.Piecewise((8 / (9 * sp.pi), sp.Eq(eps, 1)),
+                     (4 / (9 * sp.pi) * ((4 - 2 * e2) * E(e2) + (e2 - 1) * K(e2)), eps <= 1),
+                     (4 / (9 * sp.pi) * ((4 * eps - 2 * eps**3) * E(1 / e2)
+                                         + (e2 - 1) * (2 * e2 - 3) / eps * K(1 / e2)), True))
+    return F, T

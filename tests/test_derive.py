@@ -131,7 +131,9 @@ def test_symengine_and_sympy_derivatives_are_the_same_expressions(monkeypatch):
         fast, slow = _both_paths(s, monkeypatch)
         for a, b in [*zip(fast.mass_matrix, slow.mass_matrix), *zip(fast.forcing, slow.forcing),
                      (fast.jacobi, slow.jacobi)]:
-            assert is_zero(a - b), (problem.id, a, b)
+            # (limit: the sample, every 7th problem, includes p11.12, whose difference has 1,127 operations —
+            # above is_zero's default ceiling of 300, below which it would try expand)
+            assert is_zero(a - b, limit=2000), (problem.id, a, b)
         checked += 1
     assert checked >= 20
 

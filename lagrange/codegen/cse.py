@@ -60,6 +60,7 @@ class FusedExpressions:
     constraint_matrix: dict = None  # {(r, j): expr} structural zeros omitted
     constraint_rhs: tuple = ()  # c_r with A q̈ = c (Baumgarte terms included when requested)
     reaction: dict | None = None  # {(j, r): expr} of B when it differs from Aᵀ (rough constraints)
+    quadratures: tuple = ()  # QuadratureGroups computing the placeholders qs{k} of remaining integrals
 
     @property
     def m(self) -> int:
@@ -87,7 +88,7 @@ def fuse(eqs: Equations, *, extra: tuple = (), constraint_rhs=None,
     is remembered per equations and arguments, so the code generator and the Taylor tape of one model share
     one CSE — 0.14 s of a 10-link pendulum's first result).
     """
-    if printable and not extra:
+    if printable and not extra and not eqs.has_quadrature:
         fast = _symengine_fuse(eqs, constraint_rhs)
         if fast is not None:
             return fast, ()
@@ -121,7 +122,8 @@ def _fuse_inputs(eqs: Equations, extra: tuple, constraint_rhs) -> tuple[list, tu
     return exprs, (idx, aidx, bidx)
 
 
-def _assemble(eqs: Equations, indices: tuple, repl: list, red: list) -> tuple[FusedExpressions, tuple]:
+def _assemble(eqs: Equations, indices: tuple, repl: list, red: list, quadratures: tuple = ()
+              ) -> tuple[FusedExpressions, tuple]:
     n = eqs.n
     idx, aidx, bidx = indices
     k = len(idx)
@@ -134,6 +136,7 @@ def _assemble(eqs: Equations, indices: tuple, repl: list, red: list) -> tuple[Fu
         constraint_matrix={rj: e for rj, e in zip(aidx, red[k + n : ka])},
         constraint_rhs=tuple(red[ka : ka + eqs.m]),
         reaction={jr: e for jr, e in zip(bidx, red[ka + eqs.m : ka + eqs.m + len(bidx)])} if bidx else None,
+        quadratures=quadratures,
     )
     return fused, tuple(red[ka + eqs.m + len(bidx) :])
 
@@ -181,8 +184,14 @@ def _tree_size(exprs: list) -> int:
 def _fuse(eqs: Equations, extra: tuple, constraint_rhs) -> tuple[FusedExpressions, tuple]:
     ren = rename_map(eqs)
     exprs, indices = _fuse_inputs(eqs, extra, constraint_rhs)
-    repl, red = _cse([e.xreplace(ren) for e in exprs])
-    return _assemble(eqs, indices, repl, red)
+    exprs = [e.xreplace(ren) for e in exprs]
+    groups: tuple = ()
+    if eqs.has_quadrature:  # each remaining integral: a placeholder, computed by quadrature before the CSE'd lines
+        from .quadrature import split_integrals
+
+        exprs, groups = split_integrals(exprs)
+    repl, red = _cse(exprs)
+    return _assemble(eqs, indices, repl, red, groups)
 
 
 def _cse(exprs: list) -> tuple[list, list]:

@@ -51,6 +51,9 @@ def check_hamiltonian(eqs: Equations) -> None:
     if any(sp.sympify(Q) != 0 for Q in eqs.nonconservative):
         raise LagrangeError("the geometric integrators need a conservative system: forces, P or rayleigh present; "
                             "use a scipy method")
+    if eqs.has_quadrature:
+        raise LagrangeError("the geometric integrators need T and V in closed form: this system holds an integral "
+                            "evaluated by quadrature (lagrange.codegen.quadrature); use a scipy method such as DOP853")
     qd = set(eqs.qd)
     if any(sp.sympify(e).free_symbols & qd for e in sp.Matrix(eqs.mass_matrix)):
         raise LagrangeError("the geometric integrators need T quadratic in the velocities (the mass matrix "

@@ -251,7 +251,7 @@ class NumericModel:
     def _has_column_kernel(self) -> bool:
         # structural equations have no straight-line M and f to vectorize: their compiled rhs per member
         return (self.backend == "numba" and self.schedule is None and not self.equations.m
-                and not self.equations.is_structural)
+                and not self.equations.is_structural and not self.equations.has_quadrature)
 
     def _run_columns(self, tt, Yc, Pc):
         """The vectorized kernel's result, shape (2n, k), or None when a member's mass matrix failed the
@@ -592,7 +592,10 @@ def _reference_functions(eqs: Equations):
     tt, ys, ps = numeric_arguments(eqs)
     M = eqs.mass_matrix.xreplace(ren)
     f = eqs.forcing.xreplace(ren)
-    mf = _lambdify((tt, ys, ps), (M, f), modules="numpy", cse=False)
+    # integrals that remain (lagrange.codegen.quadrature) by scipy's adaptive quad/nquad: the oracle stays
+    # independent of the generated Gauss-Legendre sums
+    modules = ["scipy", "numpy"] if eqs.has_quadrature else "numpy"
+    mf = _lambdify((tt, ys, ps), (M, f), modules=modules, cse=False)
 
     def mass_forcing(t_, y, p):
         return mf(t_, list(y), list(p))
@@ -665,7 +668,20 @@ def _aux_lambdify(eqs: Equations):
     tt, ys, ps = numeric_arguments(eqs)
     T, h, T2, T0 = eqs.energy_parts()
     exprs = [sp.sympify(e).xreplace(ren) for e in (T, eqs.potential, h, eqs.jacobi_rate, T2, T0)]
-    return _lambdify((tt, ys, ps, list(eqs.multipliers)), exprs, modules="numpy", cse=True)
+    args = (tt, ys, ps, list(eqs.multipliers))
+    if any(e.has(sp.Integral) for e in exprs):  # integrals by quadrature, one sample at a time
+        from .quadrature import python_function
+
+        g = python_function(args, exprs)
+
+        def aux(t_, cols, p, lam):
+            tv = np.broadcast_to(np.asarray(t_, dtype=float), np.shape(cols[0]))
+            rows = [g(tv[i], [c[i] for c in cols], [float(np.broadcast_to(v, tv.shape)[i]) for v in p],
+                      [np.broadcast_to(v, tv.shape)[i] for v in lam]) for i in range(tv.size)]
+            return [np.array([r[k] for r in rows]) for k in range(len(exprs))]
+
+        return aux
+    return _lambdify(args, exprs, modules="numpy", cse=True)
 
 
 def lam_required(eqs: Equations) -> bool:
@@ -729,7 +745,7 @@ class _Lazy:
 def _python_rhs(source: str) -> Callable:
     from .derivation_cache import cached_code
 
-    namespace: dict = {"math": math, "np": np}
+    namespace: dict = {"math": math, "np": np, "numpy": np}
     exec(cached_code(source, "<lagrange rhs>"), namespace)  # noqa: S102 - our own generated code
     return namespace["rhs"]
 
@@ -829,13 +845,15 @@ def _rebuild(eqs: Equations, params: np.ndarray, backend: str, source: str) -> N
 
 
 def compile_equations(eqs: Equations, params: Mapping, *, backend: str = "python",
-                      constraint_rhs=None, inputs: Mapping | None = None) -> NumericModel:
+                      constraint_rhs=None, inputs: Mapping | None = None, quadrature=None) -> NumericModel:
     """Generate numeric code for ``eqs`` and bind ``params``.
 
     ``constraint_rhs`` replaces ``c`` in ``A q̈ = c`` (Baumgarte stabilization,
     :func:`lagrange.codegen.run_functions.baumgarte_rhs`). ``inputs``: a constant for each of ``eqs.inputs``
     (keys: symbols or names), bound as the last entries of ``p``; time-varying values go to
-    :func:`lagrange.integrate.run.simulate` (or :meth:`NumericModel.with_schedule`).
+    :func:`lagrange.integrate.run.simulate` (or :meth:`NumericModel.with_schedule`). ``quadrature``: the
+    :class:`~lagrange.codegen.quadrature.Rule` for integrals that remain in the equations (default
+    :data:`~lagrange.codegen.quadrature.DEFAULT_RULE`; the reference backend uses scipy's adaptive quadrature).
 
     Raises
     ------
@@ -857,7 +875,9 @@ def compile_equations(eqs: Equations, params: Mapping, *, backend: str = "python
     from .derivation_cache import cached_source
 
     options = f"backend {backend}; n_params {len(p)}; constraint_rhs {sp.srepr(constraint_rhs)}"
-    src = cached_source(eqs, options, lambda: _generate_source(eqs, backend, len(p), constraint_rhs))
+    if quadrature is not None and eqs.has_quadrature:
+        options += f"; quadrature {quadrature.order}x{quadrature.panels}"
+    src = cached_source(eqs, options, lambda: _generate_source(eqs, backend, len(p), constraint_rhs, quadrature))
     if backend == "python":
         return NumericModel(eqs, p, "python", src, _python_rhs(src), aux, mass_forcing)
     from .numba_backend import numba_rhs
@@ -865,7 +885,7 @@ def compile_equations(eqs: Equations, params: Mapping, *, backend: str = "python
     return NumericModel(eqs, p, "numba", src, numba_rhs(src), aux, mass_forcing)
 
 
-def _generate_source(eqs: Equations, backend: str, n_params: int, constraint_rhs) -> str:
+def _generate_source(eqs: Equations, backend: str, n_params: int, constraint_rhs, rule=None) -> str:
     """The generated source of the ``python`` or ``numba`` backend: one CSE over M and f, then printing
     (structural equations: one CSE over their kinematics, :mod:`lagrange.codegen.structural_source`)."""
     if eqs.is_structural:
@@ -877,10 +897,10 @@ def _generate_source(eqs: Equations, backend: str, n_params: int, constraint_rhs
 
     fused, _ = fuse(eqs, constraint_rhs=constraint_rhs, printable=True)
     if backend == "python":  # with mass(t, y, p): M alone, for mass_matrix (the initial gimbal-lock check)
-        return rhs_source(fused, n_params=n_params, flavour="python", with_mass=True)
+        return rhs_source(fused, n_params=n_params, flavour="python", with_mass=True, rule=rule)
     if eqs.m:
-        return rhs_source(fused, n_params=n_params, flavour="numba")
+        return rhs_source(fused, n_params=n_params, flavour="numba", rule=rule)
     # the module also holds `field`, called by the compiled integrator loops (lagrange.codegen.rk_source)
     from .rk_source import field_module_source
 
-    return field_module_source(eqs, fused, n_params)
+    return field_module_source(eqs, fused, n_params, rule=rule)

@@ -39,29 +39,34 @@ FIELD_SIGNATURE = "boolean(float64, float64[::1], float64[::1], float64[::1])"
 _NUMPY_ERRORS = "cache=True, error_model='numpy'"
 
 
-def _power_source(eqs: Equations, n_params: int) -> str:
+def _power_source(eqs: Equations, n_params: int, rule=None) -> str:
     """``power(t, y, p)``: dh/dt (CSE'd), for the work integral of non-conservative systems."""
     ren = rename_map(eqs)
-    repl, (red,) = sp.cse([sp.sympify(eqs.jacobi_rate).xreplace(ren)],
-                          symbols=sp.numbered_symbols("w", real=True), optimizations="basic")
+    rate = [sp.sympify(eqs.jacobi_rate).xreplace(ren)]
     body = [f"y{i} = y[{i}]" for i in range(2 * eqs.n)] + [f"p{k} = p[{k}]" for k in range(n_params)]
+    if eqs.has_quadrature:  # its integrals by the rule of rhs_into (lagrange.codegen.quadrature)
+        from .quadrature import DEFAULT_RULE, quadrature_lines, split_integrals
+
+        rate, groups = split_integrals(rate)
+        body += quadrature_lines(groups, rule or DEFAULT_RULE, "numba", print_expr)
+    repl, (red,) = sp.cse(rate, symbols=sp.numbered_symbols("w", real=True), optimizations="basic")
     body += [f"{s} = {print_expr(e)}" for s, e in repl]
     body.append(f"return float({print_expr(red)})")
     return (f"@numba.njit({_NUMPY_ERRORS})\ndef power(t, y, p):\n"
             + "\n".join("    " + line for line in body) + "\n")
 
 
-def field_module_source(eqs: Equations, fused: FusedExpressions, n_params: int) -> str:
+def field_module_source(eqs: Equations, fused: FusedExpressions, n_params: int, rule=None) -> str:
     """Module body for an unconstrained system: ``rhs_into``, ``rhs``, ``power`` (if not conservative) and
     ``field``. All but ``rhs`` carry their decorators; the backend decorates ``rhs``
     (:func:`lagrange.codegen.numba_backend.decorate`). ``n_params`` includes the rough-constraint signs, as
-    in :func:`rhs_source`."""
+    in :func:`rhs_source`; ``rule``: the quadrature rule of remaining integrals (:mod:`lagrange.codegen.quadrature`)."""
     into = f"@numba.njit({_NUMPY_ERRORS})\n" + rhs_source(fused, n_params=n_params, flavour="numba_status",
-                                                          name="rhs_into")
-    return field_module_around(into, eqs, n_params)
+                                                          name="rhs_into", rule=rule)
+    return field_module_around(into, eqs, n_params, rule)
 
 
-def field_module_around(into: str, eqs: Equations, n_params: int) -> str:
+def field_module_around(into: str, eqs: Equations, n_params: int, rule=None) -> str:
     """The module of :func:`field_module_source` around ``into``, the decorated source of a status-returning
     ``rhs_into(t, y, p, out)`` (from the expanded equations, or from the structural assembly of
     :mod:`lagrange.codegen.structural_source`): ``rhs``, ``power`` (if not conservative) and ``field``."""
@@ -72,7 +77,7 @@ def field_module_around(into: str, eqs: Equations, n_params: int) -> str:
     if eqs.is_conservative:
         body = "    return rhs_into(t, z, p, out)\n"
     else:
-        parts.append(_power_source(eqs, n_params))
+        parts.append(_power_source(eqs, n_params, rule))
         body = (f"    if not rhs_into(t, z, p, out):\n        return False\n    out[{n2}] = power(t, z, p)\n"
                 "    return True\n")
     parts.append(f"@numba.njit({FIELD_SIGNATURE!r}, {_NUMPY_ERRORS})\ndef field(t, z, p, out):\n" + body)

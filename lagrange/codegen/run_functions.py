@@ -50,7 +50,8 @@ def jacobian_function(model) -> Callable:
 
     dM = [no_delta(M.diff(y)) for y in ys]
     df = no_delta(f.jacobian(ys))
-    fn = _lambdify((tt, ys, ps), (M, f, df, dM), modules="numpy", cse=True)
+    fn = (_quadrature_parts(tt, ys, ps, M, f, df, dM) if eqs.has_quadrature
+          else _lambdify((tt, ys, ps), (M, f, df, dM), modules="numpy", cse=True))
     params = list(model.params)
 
     def jac(t_, y):
@@ -68,11 +69,35 @@ def jacobian_function(model) -> Callable:
     return jac
 
 
+def _quadrature_parts(tt, ys, ps, M, f, df, dM) -> Callable:
+    """``(M, f, df, dM)`` as :func:`jacobian_function` takes them from lambdify, for equations holding integrals
+    (differentiated under the integral sign, computed by :func:`lagrange.codegen.quadrature.python_function`)."""
+    from .quadrature import python_function
+
+    n = M.shape[0]
+    flat = list(M) + list(f) + list(df) + [e for m in dM for e in m]
+    fn = python_function((tt, ys, ps), flat)
+
+    def parts(t_, y, p):
+        v = np.array(fn(t_, y, p))
+        k = n * n
+        dm = v[k + n + 2 * n * n:].reshape(2 * n, n, n)
+        return v[:k].reshape(n, n), v[k:k + n], v[k + n:k + n + 2 * n * n].reshape(n, 2 * n), list(dm)
+
+    return parts
+
+
 def _rate_function(eqs: Equations) -> Callable:
-    """``(t, y, p, λ) ↦ dh/dt`` of ``eqs`` (plain floats; one CSE'd lambdify)."""
+    """``(t, y, p, λ) ↦ dh/dt`` of ``eqs`` (plain floats; one CSE'd lambdify; its integrals by quadrature)."""
     ren = rename_map(eqs)
     tt, ys, ps = numeric_arguments(eqs)
-    return _lambdify((tt, ys, ps, list(eqs.multipliers)), eqs.jacobi_rate.xreplace(ren), modules="math", cse=True)
+    args = (tt, ys, ps, list(eqs.multipliers))
+    if eqs.has_quadrature:
+        from .quadrature import python_function
+
+        fn = python_function(args, [eqs.jacobi_rate.xreplace(ren)])
+        return lambda *a: fn(*a)[0]
+    return _lambdify(args, eqs.jacobi_rate.xreplace(ren), modules="math", cse=True)
 
 
 def power_function(model) -> Callable:

@@ -165,7 +165,7 @@ def _constrained_lines(n: int, m: int, upper: dict, A: dict, B: dict | None = No
 
 
 def rhs_source(fused: FusedExpressions, *, n_params: int, flavour: str = "python", name: str = "rhs",
-               with_mass: bool = False) -> str:
+               with_mass: bool = False, rule=None) -> str:
     """Source text of ``rhs(t, y, p)``.
 
     ``flavour="python"`` unpacks ``y.tolist()`` (fast Python floats) and returns a list;
@@ -174,6 +174,9 @@ def rhs_source(fused: FusedExpressions, *, n_params: int, flavour: str = "python
     allocating and returning False instead of raising on a mass matrix that is not positive definite (the
     body of the numba module that the compiled integrator loops call, :mod:`lagrange.codegen.rk_source`).
     With constraints the result is ``[q̇, q̈, λ]`` (length 2n + m), without them ``[q̇, q̈]``.
+    Integrals that remain in the equations (``fused.quadratures``) are computed first, by ``rule``
+    (:class:`lagrange.codegen.quadrature.Rule`, default :data:`~lagrange.codegen.quadrature.DEFAULT_RULE`): numpy
+    arrays over the nodes in the python flavour, loops in the numba flavours.
     ``with_mass=True`` (python flavour, no constraints) appends ``mass(t, y, p)``: M as a nested list of rows, from
     the same printed lines (only the temporaries M needs), for
     :meth:`~lagrange.codegen.numeric.NumericModel.mass_matrix`.
@@ -190,6 +193,13 @@ def rhs_source(fused: FusedExpressions, *, n_params: int, flavour: str = "python
     else:
         body += [f"y{i} = y[{i}]" for i in range(2 * n)]
         body += [f"p{k} = p[{k}]" for k in range(n_params)]
+    if fused.quadratures:
+        from .quadrature import DEFAULT_RULE, quadrature_lines
+
+        quad = quadrature_lines(fused.quadratures, rule or DEFAULT_RULE, flavour, print_expr)
+        body += quad
+        if flavour == "python":
+            head = head + quad  # mass() computes them too (T may hold an integral)
     temporaries = [(str(s), f"{s} = {print_expr(e)}") for s, e in fused.temporaries]
     mass_lines = [f"a{i}_{j} = {print_expr(e)}" for (i, j), e in fused.mass_upper.items()]
     body += [line for _, line in temporaries] + mass_lines

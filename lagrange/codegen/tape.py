@@ -224,6 +224,10 @@ def _check_analytic(eqs: Equations) -> None:
     from ..model.coordinates import coordinate_name
 
     names = [coordinate_name(c) for c in eqs.coordinates]
+    if eqs.has_quadrature:
+        raise TapeError("the equations hold an integral evaluated by quadrature (lagrange.codegen.quadrature), "
+                        "which the Taylor method and heyoka cannot expand; use an adaptive Runge-Kutta method such "
+                        "as method='DOP853' for this system")
     places = [(f"the generalized force of {names[i]}", e) for i, e in enumerate(eqs.forcing)]
     places += [(f"the mass matrix entry M[{names[i]}, {names[j]}]", eqs.mass_matrix[i, j])
                for i in range(eqs.n) for j in range(i, eqs.n)]

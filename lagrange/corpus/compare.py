@@ -12,6 +12,7 @@ import random
 from collections.abc import Mapping, Sequence
 
 import mpmath
+import numpy as np
 import sympy as sp
 
 __all__ = ["numeric_points", "agree", "Mismatch"]
@@ -41,24 +42,57 @@ def numeric_points(symbols: Sequence[sp.Symbol], count: int, *, seed: int = 1234
     return pts
 
 
+#: Gauss–Legendre nodes per variable of a multiple integral in :func:`_quadrature` (double precision)
+MULTIPLE_NODES = 64
+
+
 def _quadrature(expr, point):
-    """``expr`` at ``point`` with every definite integral done by 30-digit mpmath quadrature (a book answer
-    written as an integral over a body, Wells ch. 6); sympy's own ``Integral.evalf`` takes seconds each."""
+    """``expr`` at ``point`` with every definite integral done numerically (a book answer written as an integral
+    over a body, Wells ch. 6); sympy's own ``Integral.evalf`` takes seconds each. A single integral: 30-digit
+    mpmath quadrature on 8 panels (sharp but smooth integrands). A multiple integral (a plate): a
+    :data:`MULTIPLE_NODES`-point Gauss–Legendre rule per variable in double precision (inner limits at the outer
+    nodes), accurate to round-off for the analytic integrands the problems' ranges give (nested 30-digit
+    quadrature took minutes per point)."""
     expr = sp.sympify(expr).xreplace(point)
 
     def one(integral):
         inner = integral.function.replace(lambda e: isinstance(e, sp.Integral), one)
-        if len(integral.limits) != 1 or len(integral.limits[0]) != 3:
-            return integral.func(inner, *integral.limits)
-        var, lo, hi = integral.limits[0]
-        if inner.free_symbols - {var} or sp.sympify(lo).free_symbols or sp.sympify(hi).free_symbols:
-            return integral.func(inner, *integral.limits)
+        limits = integral.limits
+        if any(len(lim) != 3 for lim in limits):
+            return integral.func(inner, *limits)
+        variables = [lim[0] for lim in limits]
+        if inner.free_symbols - set(variables) or any(
+                sp.sympify(e).free_symbols - set(variables[k + 1:]) for k, lim in enumerate(limits) for e in lim[1:]):
+            return integral.func(inner, *limits)
+        if len(limits) > 1:
+            return sp.Float(_tensor_gauss(inner, limits), 17)
+        var, lo, hi = limits[0]
         f = sp.lambdify(var, inner, "mpmath")
         with mpmath.workdps(30):
             a, b = (mpmath.mpf(str(sp.N(e, 35))) for e in (lo, hi))
             return sp.Float(mpmath.quad(f, mpmath.linspace(a, b, 9)), 30)  # 8 panels: sharp but smooth integrands
 
     return expr.replace(lambda e: isinstance(e, sp.Integral), one)
+
+
+def _tensor_gauss(inner, limits) -> float:
+    """The multiple integral of ``inner`` over ``limits`` (innermost first) by a tensor Gauss–Legendre rule."""
+    x, w = np.polynomial.legendre.leggauss(MULTIPLE_NODES)
+    variables = [lim[0] for lim in limits]
+    f = sp.lambdify(variables, inner, "numpy")
+    ends = [sp.lambdify(variables[k + 1:], sp.Tuple(*lim[1:]), "numpy") for k, lim in enumerate(limits)]
+
+    def integrate(k, outer):
+        shape = np.broadcast_shapes(*(np.shape(o) for o in outer))
+        a, b = (np.broadcast_to(np.asarray(e, dtype=float), shape) for e in ends[k](*outer))
+        half, mid = (b - a) / 2, (b + a) / 2
+        v = mid[..., None] + half[..., None] * x
+        args = [np.asarray(o)[..., None] for o in outer]
+        vals = f(v, *args) if k == 0 else integrate(k - 1, (v, *args))
+        return (np.broadcast_to(vals, v.shape) * w).sum(axis=-1) * half
+
+    with np.errstate(all="ignore"):
+        return float(integrate(len(limits) - 1, ()))
 
 
 def _value(expr, point):

@@ -91,7 +91,7 @@ class Equations:
 
     def __getstate__(self) -> dict:
         # sympy hashes differ between processes (string hashing is salted): never pickle the cached one
-        return {k: v for k, v in self.__dict__.items() if k != "_hash"}
+        return {k: v for k, v in self.__dict__.items() if k not in ("_hash", "_quadrature")}
 
     @property
     def is_structural(self) -> bool:
@@ -105,6 +105,20 @@ class Equations:
         qd = sp.Matrix(self.qd)
         T2 = (qd.T * self.mass_matrix * qd)[0, 0] / 2
         return self.kinetic, self.jacobi, T2, self.kinetic.subs({v: 0 for v in self.qd})
+
+    @property
+    def has_quadrature(self) -> bool:
+        """True when an integral sympy could not evaluate remains in M, f, the constraint blocks or the power
+        ``dh/dt`` (:mod:`lagrange.model.integrals`): generated code evaluates it by quadrature
+        (:mod:`lagrange.codegen.quadrature`), and the Taylor method and heyoka refuse the equations."""
+        if self.is_structural:  # (never: System keeps integrals to the expanded derivation; M, f are lazy there)
+            return False
+        h = self.__dict__.get("_quadrature")
+        if h is None:
+            h = any(sp.sympify(e).has(sp.Integral) for e in (self.mass_matrix, self.forcing, self.jacobi_rate,
+                                                              *self.constraint_rhs, self.constraint_matrix))
+            object.__setattr__(self, "_quadrature", h)
+        return h
 
     @property
     def n(self) -> int:

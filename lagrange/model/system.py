@@ -229,12 +229,14 @@ class System:
                 continue
             presc[key] = val
 
+        reserved = frozenset({"t", *names, *(f"{n}_dot" for n in names), *(f"{n}_ddot" for n in names)})
+
         def prep(expr, what):
             e = _sym(expr, what, problems)
             check_declared(e, what=what)  # before anything works on it (lagrange.budget)
-            e = evaluate_integrals(e, what, problems)
+            e = evaluate_integrals(e, what, problems, reserved)
             if presc:
-                e = e.subs(presc).doit()
+                e = e.subs(presc).doit(integrals=False)  # (an integral kept for quadrature stays)
             return e
 
         bodies = tuple(bodies)
@@ -247,6 +249,9 @@ class System:
         T_given = prep(0 if T is None else T, "T")
         wanted = derivation == "structural" or (derivation == "auto" and auto_structural(len(coords), bodies))
         refusal = structural_refusal(T_given, bodies)  # (also a precondition of kinetic_declaration below)
+        if refusal is None and _holds_integral(P, rayleigh, forces):
+            refusal = ("P, the Rayleigh function or a force holds an integral (quadrature is generated for the "
+                       "expanded equations)")
         if derivation == "structural" and refusal is not None:
             problems.append(f"derivation='structural' is not available: {refusal}; use derivation='expanded'")
         structural = wanted and refusal is None
@@ -269,7 +274,7 @@ class System:
         if presc and forces is not None:
             raw_forces = _substitute_forces(forces, presc)
         F = generalized_forces(raw_forces, coords, problems) if coords else {}
-        F = {q: evaluate_integrals(f, f"F_{coordinate_name(q)}", problems) for q, f in F.items()}
+        F = {q: evaluate_integrals(f, f"F_{coordinate_name(q)}", problems, reserved) for q, f in F.items()}
         for q, f in F.items():
             check_declared(f, what=f"the generalized force F_{coordinate_name(q)}")
 
@@ -612,16 +617,19 @@ class System:
 
     # --- numbers ------------------------------------------------------------------------------
     def compile(self, params: Mapping | None = None, *, backend: str = "python",
-                inputs: Mapping | None = None) -> NumericModel:
+                inputs: Mapping | None = None, quadrature=None) -> NumericModel:
         """Generate numeric code for ``M q̈ = f`` with parameters bound to ``params``.
 
         Values of declared parameters that cancel out are ignored with a warning (:meth:`bindable`).
         ``inputs``: a constant value for each input of the system (:attr:`inputs`); time-varying values are
-        given to :meth:`simulate`, which replaces these. See :func:`lagrange.codegen.numeric.compile_equations`.
+        given to :meth:`simulate`, which replaces these. ``quadrature``: the
+        :class:`~lagrange.codegen.quadrature.Rule` of integrals kept for quadrature (:mod:`lagrange.model.integrals`).
+        See :func:`lagrange.codegen.numeric.compile_equations`.
         """
         from ..codegen.numeric import compile_equations
 
-        return compile_equations(self._equations, self.bindable(params), backend=backend, inputs=inputs)
+        return compile_equations(self._equations, self.bindable(params), backend=backend, inputs=inputs,
+                                 quadrature=quadrature)
 
     def multipliers_at(self, state: Mapping, params: Mapping | None = None, *, t: float = 0.0) -> dict:
         """``{constraint name: λ}`` at one state, as :meth:`Trajectory.multiplier
@@ -781,6 +789,20 @@ def _substitute_constraint(c, presc):
     if isinstance(c, Differential):
         return Differential({k: sub(v) for k, v in c.coefficients.items()}, sub(c.dt), c.name)
     return sub(c)
+
+
+def _holds_integral(*items) -> bool:
+    """True when a declared P, Rayleigh function or force (as given: expressions, a dict of generalized forces, or
+    Force/Torque objects) holds an ``Integral``."""
+    for item in items:
+        if isinstance(item, dict):
+            item = list(item.values())
+        for e in item if isinstance(item, (list, tuple)) else [item]:
+            e = getattr(e, "vector", e)
+            parts = e if isinstance(e, (list, tuple, sp.MatrixBase)) else [e]
+            if any(isinstance(x, sp.Basic) and x.has(sp.Integral) for x in parts):
+                return True
+    return False
 
 
 def _substitute_forces(forces, presc):
