@@ -87,6 +87,7 @@ _EXPORTS: dict[str, str] = {
     "ConventionChangeWarning": ".errors",
 
     "NonAnalyticWarning": ".errors",
+    "InitialStateChangedWarning": ".errors",
     "CacheError": ".errors",
     "CacheIntegrityWarning": ".errors",
     "MethodError": ".errors",
@@ -213,6 +214,7 @@ __all__ = [
     "ConventionChangeWarning",
 
     "NonAnalyticWarning",
+    "InitialStateChangedWarning",
     "CacheError",
     "CacheIntegrityWarning",
     "is_conservative",

@@ -224,3 +224,12 @@ class NonAnalyticWarning(LagrangeWarning):
 
 
 __all__ += ["NonAnalyticWarning"]
+
+
+class InitialStateChangedWarning(LagrangeWarning):
+    """A value the user gave in the initial state was changed to satisfy the constraints (an inconsistent
+    state projected onto them): the message names each changed value (given → used) and the violated
+    constraints; the trajectory records them (``Trajectory.initial_adjustments``)."""
+
+
+__all__ += ["InitialStateChangedWarning"]

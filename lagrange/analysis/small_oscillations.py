@@ -352,7 +352,7 @@ def linearize(system, about: Mapping | None = None, velocities: Mapping | None =
     ind_q = [coords[i] for i in red["ind_q"]]
     ref_q = {c: (float(blk["q"][i]) if blk["numeric"] else q0.get(position_symbol(c), sp.S.Zero))
              for i, c in enumerate(coords)}
-    ref_v = {c.diff(t): (float(blk["v"][i]) if blk["numeric"] else v0.get(velocity_symbol(c), sp.S.Zero))
+    ref_v = {c.diff(t): (float(blk["v"][i]) if blk["numeric"] else blk["v"][i])
              for i, c in enumerate(coords)}
     lam = [float(x) if blk["numeric"] else x for x in (blk["lam"] if blk["numeric"] else list(blk["lam"]))]
     return LinearModel(

@@ -202,7 +202,7 @@ def simulate(
         eqs, switches = NumericModel.regularized(eqs, fr.epsilon), []
     if eqs.planar_friction:  # friction over a surface: exact |v| (floored) or regularized sqrt(|v|² + ε²)
         eqs = NumericModel.planar_friction(eqs, fr.treatment, fr.epsilon)
-    y0 = initial_state(eqs.coordinates, initial)
+    y0 = initial_state(eqs.coordinates, initial, speeds_optional=bool(eqs.m))  # (computed: consistent_initial)
     params, constants, schedule = split_inputs(eqs, params, inputs, (t0, t1), y0)
     needs = _needs(eqs, events, switches, schedule) | ({"dense_output": ""} if t_eval is not None else {})
     why, bound = "", False
