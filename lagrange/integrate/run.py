@@ -102,7 +102,10 @@ def simulate(
     Parameters
     ----------
     t_span : (t0, t1) or a number t1 (then t0 = 0)
-    initial : dict keyed by coordinates, their velocities (``q.diff(t)``) or names (``"q"``, ``"q_dot"``)
+    initial : dict keyed by coordinates, their velocities (``q.diff(t)``) or names (``"q"``, ``"q_dot"``); with
+        constraints the speeds left out are computed from the velocity constraints, and a given value moved onto
+        the constraints is named in an :class:`~lagrange.errors.InitialStateChangedWarning` (see
+        :func:`~lagrange.integrate.constrained.consistent_initial`)
     params : dict of parameter values keyed by symbol or name
     inputs : dict ``{input or name: value}``, one value for each input of the system
         (:mod:`lagrange.model.inputs`): a number, a function ``u(t)``, a feedback law ``u(t, y)`` of the state
@@ -163,7 +166,8 @@ def simulate(
         An option out of range (rtol, atol, n_points, max_step, step, t_eval, friction epsilon, Baumgarte
         gains), or a ``model`` compiled for another system; the message names the option and the limit.
     InitialConditionError, ParameterError
-        Missing or bad initial values, parameters or input values (all listed).
+        Missing or bad initial values, parameters or input values (all listed); a speed left out that the
+        velocity constraints do not determine; an inconsistent state with ``project_initial=False``.
     InputError
         An input callable that is neither ``u(t)`` nor ``u(t, y)``, or time-varying inputs on a route that
         cannot evaluate them.
