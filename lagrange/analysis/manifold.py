@@ -436,6 +436,8 @@ def _symbolic_speeds(eqs, A0, b0, at: dict, v0: Mapping) -> dict:
         An = np.array(A0.xreplace(sample).evalf(), dtype=float)
     except (TypeError, ValueError):
         return {}
+    if not np.all(np.isfinite(An)):  # singular here: the check of the reference state names it
+        return {}
     dep = [free[j] for j in pivot_columns(An[:, free])]
     if not dep:
         return {}

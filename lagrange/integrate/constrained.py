@@ -110,9 +110,11 @@ def pivot_columns(J: np.ndarray) -> list[int]:
     The rule: a pivoted Gram–Schmidt that takes, at each step, the LAST declared column whose remaining norm is
     at least 0.1 of the largest remaining norm — well conditioned, and the variables declared first stay
     independent. It stops when no column has a remaining norm above ``RANK_TOL`` × the largest entry of ``J``
-    (so fewer than k columns come back when J is rank deficient)."""
+    (so fewer than k columns come back when J is rank deficient; none when J is not finite)."""
     k = J.shape[0]
     R = np.array(J, dtype=float)
+    if not np.all(np.isfinite(R)):
+        return []
     scale = max(1.0, float(np.max(np.abs(R)))) if R.size else 1.0
     chosen: list[int] = []
     for _ in range(k):
