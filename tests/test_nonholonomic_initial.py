@@ -221,3 +221,14 @@ def test_cli_initial_gives_only_the_independent_speeds(tmp_path, capsys):
         status = main(["simulate", str(path), "-q", "--initial", f"q3_dot={SPIN}", "--initial", "x_dot=0",
                        "--no-progress"])
     assert status == 0
+
+
+def test_sweep_over_the_spin_with_only_the_independent_speeds(disc):
+    from lagrange import sweep
+
+    q3 = disc.coordinates[4]
+    ini = {k: v for k, v in independent(disc, 0.0).items() if k != q3.diff(t)}
+    table = sweep(disc, {"q3_dot": [5.0, 10.0]}, t_end=0.2, initial={**ini, q3.diff(t): 1.0}, params=P, workers=0)
+    assert list(table["status"]) == ["ok", "ok"]
+    assert list(table["final_x_dot"]) == pytest.approx([P["r"] * 5.0, P["r"] * 10.0], rel=1e-9)
+    assert list(table["final_x"]) == pytest.approx([P["r"] * 5.0 * 0.2, P["r"] * 10.0 * 0.2], rel=1e-8)
