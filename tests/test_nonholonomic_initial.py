@@ -150,6 +150,9 @@ def test_holonomic_speed_computed_and_a_moved_coordinate_warns():
         sol = s.simulate(0.1, {x: 1.05, y: 0.0, x.diff(t): 0.0, y.diff(t): 0.2}, PP)
     assert moves(rec[0].message) == "x 1.05 → 1"  # y = 0 and the speeds did not move
     assert sol.initial_adjustments == {"x": (1.05, pytest.approx(1.0, rel=1e-14))}
+    # at the centre the constraint's Jacobian (x, y)/sqrt(x² + y²) is not finite: nothing can be computed
+    with pytest.raises(InitialConditionError, match="y_dot.*not finite at the initial positions"):
+        s.simulate(0.1, {x: 0.0, y: 0.0, x.diff(t): 1.0}, {**PP, "l": 0.0})
 
 
 @pytest.mark.parametrize("spin", [0.5, 3.0, np.sqrt(9.81 / 0.9) * 0.999, np.sqrt(9.81 / 0.9) * 1.001, 15.0])

@@ -211,7 +211,14 @@ def consistent_initial(model, t0: float, y0: np.ndarray, project: bool, given=No
             raise InitialConditionError(
                 f"cannot project the initial positions onto the constraints (remaining |φ| = {resid:.3g}): "
                 f"{', '.join(bad)} may be inconsistent or the guess too far off")
-    A, b = cf.matrix(t0, q1), cf.bias(t0, q1)
+    with np.errstate(all="ignore"):  # (a singular configuration: refused below, or by the run)
+        A, b = cf.matrix(t0, q1), cf.bias(t0, q1)
+    left_out = [names[n + i] for i in range(n) if not given[n + i]]
+    if left_out and not (np.all(np.isfinite(A)) and np.all(np.isfinite(b))):
+        raise InitialConditionError(
+            f"missing initial value(s) for {', '.join(left_out)}: the velocity constraints ({', '.join(cnames)}) "
+            "are not finite at the initial positions (a singular configuration), so they cannot be computed; "
+            "give them, or start from another configuration")
     qd, computed, missing = complete_speeds(A, b, qd, given[n:])
     if missing:
         raise InitialConditionError(
