@@ -37,7 +37,6 @@ from __future__ import annotations
 
 import importlib
 import warnings
-from collections.abc import Sequence
 
 import numpy as np
 
@@ -165,8 +164,7 @@ def complete_speeds(A: np.ndarray, b: np.ndarray, qd: np.ndarray, given) -> tupl
     return qd, dep, [i for i in free if i not in dep]
 
 
-def consistent_initial(model, t0: float, y0: np.ndarray, project: bool, given=None, *,
-                       names: Sequence[str] | None = None) -> tuple[np.ndarray, dict, dict]:
+def consistent_initial(model, t0: float, y0: np.ndarray, project: bool, given=None) -> tuple[np.ndarray, dict, dict]:
     """A state on the constraint manifold from the user's ``y0``: the speeds not ``given`` computed
     (:func:`complete_speeds`), then the positions and speeds projected when the state still violates the
     constraints (``project``) or InitialConditionError (strict).
@@ -176,14 +174,13 @@ def consistent_initial(model, t0: float, y0: np.ndarray, project: bool, given=No
     y0 : ndarray, shape (2n,) — the user's state (entries not given hold placeholders)
     given : sequence of 2n bools, optional — which entries the user gave (default: all); a coordinate must be
         given, a speed may be left out when the velocity constraints determine it
-    names : the 2n names of the state's entries, for the messages (default: the model's)
 
     Returns
     -------
-    (y, violation, adjustments) : the consistent state, shape (2n,); ``{constraint: (φ, A q̇ + b)}`` of the
-    user's state (the speeds left out computed first); ``{name: (given value or None, value used)}`` for each
-    value computed (None) or changed by the projection. Each changed given value is also named in an
-    :class:`~lagrange.errors.InitialStateChangedWarning`.
+    (y, violation, adjustments) : the consistent state, shape (2n,); ``{constraint: (φ, A q̇ + b)}``: φ of the
+    given positions, A q̇ + b of the speeds (those left out computed) at the positions used;
+    ``{name: (given value or None, value used)}`` for each value computed (None) or changed by the projection.
+    Each changed given value is also named in an :class:`~lagrange.errors.InitialStateChangedWarning`.
 
     Raises
     ------
@@ -191,48 +188,26 @@ def consistent_initial(model, t0: float, y0: np.ndarray, project: bool, given=No
         A speed left out that the constraints do not determine, a violated constraint when strict, or a
         projection that does not converge.
     """
-    cf = model.constraint_functions
-    n = model.n
-    cnames = model.equations.constraint_names
-    names = list(names) if names is not None else _state_names(model)
+    cf, n, cnames = model.constraint_functions, model.n, model.equations.constraint_names
+    names = _state_names(model)
     given = [True] * (2 * n) if given is None else [bool(g) for g in given]
     y0 = np.array(y0, dtype=float)
-    q, qd = y0[:n], y0[n:]
     pos = np.zeros(model.m)
     if cf.holonomic:
-        pos[cf.holonomic] = cf.phi(t0, q)
+        pos[cf.holonomic] = cf.phi(t0, y0[:n])
     scale = 1.0 + float(np.max(np.abs(y0)))  # (entries not given hold 0)
+    tol = INITIAL_TOL * scale
     proj = Projector(cf, n)
-    q1 = q
-    if np.any(np.abs(pos) > INITIAL_TOL * scale) and project:
-        q1, resid = proj.positions(t0, q)
-        if resid > 1e-9 * scale:
-            bad = [cnames[k] for k in range(model.m) if abs(pos[k]) > INITIAL_TOL * scale]
-            raise InitialConditionError(
-                f"cannot project the initial positions onto the constraints (remaining |φ| = {resid:.3g}): "
-                f"{', '.join(bad)} may be inconsistent or the guess too far off")
-    with np.errstate(all="ignore"):  # (a singular configuration: refused below, or by the run)
-        A, b = cf.matrix(t0, q1), cf.bias(t0, q1)
-    left_out = [names[n + i] for i in range(n) if not given[n + i]]
-    if left_out and not (np.all(np.isfinite(A)) and np.all(np.isfinite(b))):
-        raise InitialConditionError(
-            f"missing initial value(s) for {', '.join(left_out)}: the velocity constraints ({', '.join(cnames)}) "
-            "are not finite at the initial positions (a singular configuration), so they cannot be computed; "
-            "give them, or start from another configuration")
-    qd, computed, missing = complete_speeds(A, b, qd, given[n:])
-    if missing:
-        raise InitialConditionError(
-            f"missing initial value(s) for {', '.join(names[n + i] for i in missing)}: the velocity constraints "
-            f"({', '.join(cnames)}) determine only {', '.join(names[n + i] for i in computed) or 'none of them'}; "
-            "give the others")
-    vel = A @ qd + b
+    q1 = _projected_positions(proj, t0, y0[:n], pos, tol, cnames) if project and np.any(np.abs(pos) > tol) \
+        else y0[:n]
+    qd, computed = _completed_speeds(cf, t0, q1, y0[n:], given[n:], names[n:], cnames)
+    vel = cf.matrix(t0, q1) @ qd + cf.bias(t0, q1)
     report = {cnames[k]: (float(pos[k]), float(vel[k])) for k in range(model.m)}
     adjustments = {names[n + i]: (None, float(qd[i])) for i in computed}
-    bad = [k for k in range(model.m) if abs(pos[k]) > INITIAL_TOL * scale or abs(vel[k]) > INITIAL_TOL * scale]
-    y = np.concatenate([q, qd])
+    bad = [k for k in range(model.m) if abs(pos[k]) > tol or abs(vel[k]) > tol]
     if not bad:
-        return y, report, adjustments
-    detail = "; ".join(_violation(cnames[k], pos[k], vel[k], INITIAL_TOL * scale) for k in bad)
+        return np.concatenate([y0[:n], qd]), report, adjustments
+    detail = "; ".join(_violation(cnames[k], pos[k], vel[k], tol) for k in bad)
     if not project:
         raise InitialConditionError(
             f"initial state violates the constraints ({detail}); fix it (give only the independent speeds: the "
@@ -249,6 +224,40 @@ def consistent_initial(model, t0: float, y0: np.ndarray, project: bool, given=No
                       "Stabilization(project_initial=False) refuses instead", InitialStateChangedWarning,
                       stacklevel=5)
     return y1, report, adjustments
+
+
+def _projected_positions(proj: Projector, t0: float, q: np.ndarray, pos: np.ndarray, tol: float,
+                         cnames) -> np.ndarray:
+    """The positions projected onto φ = 0; InitialConditionError when the projection does not converge."""
+    q1, resid = proj.positions(t0, q)
+    if resid > 10 * tol:
+        bad = [cnames[k] for k in range(len(pos)) if abs(pos[k]) > tol]
+        raise InitialConditionError(
+            f"cannot project the initial positions onto the constraints (remaining |φ| = {resid:.3g}): "
+            f"{', '.join(bad)} may be inconsistent or the guess too far off")
+    return q1
+
+
+def _completed_speeds(cf, t0: float, q: np.ndarray, qd: np.ndarray, given, names, cnames) -> tuple[np.ndarray, list]:
+    """The speeds with those left out computed at the positions ``q`` (:func:`complete_speeds`), and their
+    indices; InitialConditionError naming a speed left out that cannot be computed."""
+    left_out = [names[i] for i in range(len(qd)) if not given[i]]
+    if not left_out:
+        return np.array(qd, dtype=float), []
+    with np.errstate(all="ignore"):  # (a singular configuration: refused here)
+        A, b = cf.matrix(t0, q), cf.bias(t0, q)
+    if not (np.all(np.isfinite(A)) and np.all(np.isfinite(b))):
+        raise InitialConditionError(
+            f"missing initial value(s) for {', '.join(left_out)}: the velocity constraints ({', '.join(cnames)}) "
+            "are not finite at the initial positions (a singular configuration), so they cannot be computed; "
+            "give them, or start from another configuration")
+    qd, computed, missing = complete_speeds(A, b, qd, given)
+    if missing:
+        raise InitialConditionError(
+            f"missing initial value(s) for {', '.join(names[i] for i in missing)}: the velocity constraints "
+            f"({', '.join(cnames)}) determine only {', '.join(names[i] for i in computed) or 'none of them'}; "
+            "give the others")
+    return qd, computed
 
 
 def _violation(name: str, pos: float, vel: float, tol: float) -> str:
