@@ -255,3 +255,12 @@ def shown(value, limit: int = 80) -> str:
         text = f"<an integer of {value.bit_length() * 0.30103:.0f} digits>" if isinstance(value, int) else \
             f"<a {type(value).__name__}>"
     return text if len(text) <= limit else text[: limit - 5] + " ...>"
+
+
+class InitialStateChangedWarning(LagrangeWarning):
+    """A value the user gave in the initial state was changed to satisfy the constraints (an inconsistent
+    state projected onto them): the message names each changed value (given → used) and the violated
+    constraints; the trajectory records them (``Trajectory.initial_adjustments``)."""
+
+
+__all__ += ["InitialStateChangedWarning"]

@@ -11,6 +11,7 @@ from lagrange import (
     Differential,
     Holonomic,
     InitialConditionError,
+    InitialStateChangedWarning,
     IntegrableConstraintWarning,
     Nonholonomic,
     Particle,
@@ -187,7 +188,8 @@ class TestDrift:
     def test_initial_conditions_projected_or_rejected(self):
         s, x, y, _ = cartesian_pendulum()
         bad = {x: 1.05, y: 0.0, x.diff(t): 0.1, y.diff(t): 0.0}
-        sol = s.simulate(0.5, bad, PARAMS)
+        with pytest.warns(InitialStateChangedWarning, match="x 1.05 → 1, x_dot 0.1 → 0"):  # never silently
+            sol = s.simulate(0.5, bad, PARAMS)
         assert abs(np.hypot(sol[x][0], sol[y][0]) - 1.0) < 1e-12
         pos, vel = sol.initial_constraint_violation["string"]
         assert pos == pytest.approx(0.05) and vel == pytest.approx(0.1)

@@ -56,6 +56,7 @@ import sympy as sp
 
 from ..conventions import t
 from ..errors import AnalysisError, ParameterError
+from ..integrate.constrained import complete_speeds, pivot_columns
 from ..model.coordinates import coordinate_name, position_symbol, velocity_symbol
 from ..safe_sympify import expression as _expression
 from ..safe_sympify import lambdify as _lambdify
@@ -280,6 +281,12 @@ def numeric_blocks(system, q0: Mapping, v0: Mapping, u0: Mapping, params: Mappin
     t0 = float(by_name.get("t", 0.0))
     with np.errstate(all="ignore"):
         M, f, A, b, c, kinks, phi = first(qv, vv, uv, pv, t0)
+    if eqs.m and np.all(np.isfinite(A)) and np.all(np.isfinite(b)):  # the speeds left out: from A q̇ + b = 0
+        done, computed, _ = complete_speeds(A, b[:, 0], vv, [s in v0 for s in eqs.qd])
+        if computed and not np.array_equal(done, vv):
+            vv = done
+            with np.errstate(all="ignore"):
+                M, f, A, b, c, kinks, phi = first(qv, vv, uv, pv, t0)
     _finite({"M": M, "f": f, "A": A, "b": b, "c": c}, eqs, qv, vv)
     _check_kinks(eqs, kinks)
     blk = dict(M=M, f=f[:, 0], A=A, b=b[:, 0], c=c[:, 0], q=qv, v=vv, u=uv, phi=phi[:, 0], numeric=True)
@@ -331,7 +338,8 @@ def _check_manifold(eqs, blk) -> None:
             bad.append(f"{eqs.constraint_names[k]}: A q̇ + b = {r:.3g}")
     if bad:
         raise AnalysisError("the reference state does not satisfy the constraints (" + "; ".join(bad) + "): give "
-                            "consistent coordinates and velocities in `about`")
+                            "consistent coordinates, and only the independent velocities in `about` (the speeds "
+                            "left out are computed from the velocity constraints)")
 
 
 def _reference_accelerations(blk, eqs):
@@ -365,7 +373,10 @@ def symbolic_blocks(system, q0: Mapping, v0: Mapping, u0: Mapping, inputs: tuple
     b = sp.Matrix(list(eqs.constraint_bias)) if m else sp.zeros(0, 1)
     c = sp.Matrix(list(eqs.constraint_rhs)) if m else sp.zeros(0, 1)
     ev = lambda X: X.xreplace(at).applyfunc(_tidy)  # noqa: E731
-    M0, f0, A0, b0, c0 = ev(M), ev(f), ev(A), ev(b), ev(c)
+    A0, b0 = ev(A), ev(b)
+    if m:
+        at.update(_symbolic_speeds(eqs, A0, b0, at, v0))
+    M0, f0, c0 = ev(M), ev(f), ev(c)
     for a in _kink_arguments(eqs):
         if _tidy(a.xreplace(at)) == 0:
             raise AnalysisError(f"cannot linearize at a point where the force is not differentiable: the argument "
@@ -397,7 +408,7 @@ def symbolic_blocks(system, q0: Mapping, v0: Mapping, u0: Mapping, inputs: tuple
     atq = {**at, **dict(zip(eqs.qdd, qdd)), **dict(zip(eqs.multipliers, lam))}
     res = f + (A.T * sp.Matrix(eqs.multipliers) if m else sp.zeros(n, 1)) - M * sp.Matrix(eqs.qdd)
     ev2 = lambda X: _no_delta_matrix(X).xreplace(atq).applyfunc(_tidy)  # noqa: E731
-    blk = dict(M=M0, f=f0, A=A0, b=b0, c=c0, qdd=qdd, lam=lam, numeric=False,
+    blk = dict(M=M0, f=f0, A=A0, b=b0, c=c0, qdd=qdd, lam=lam, numeric=False, v=[at[s] for s in eqs.qd],
                Kq=ev2(res.jacobian(q)), Kv=ev2(f.jacobian(qd)), Ku=ev2(f.jacobian(u)) if u else sp.zeros(n, 0))
     if m and all(at[s] == 0 for s in eqs.qd) and all(_sympify(e) == 0 for e in b):
         # c = −(∂(A q̇)/∂q) q̇ is quadratic in q̇: at rest its derivatives vanish (saves the costly ∂c/∂q)
@@ -411,6 +422,35 @@ def symbolic_blocks(system, q0: Mapping, v0: Mapping, u0: Mapping, inputs: tuple
     else:
         blk.update(Cq=sp.zeros(0, n), Cv=sp.zeros(0, n), Cu=sp.zeros(0, len(u)), Gq=sp.zeros(0, n))
     return blk
+
+
+def _symbolic_speeds(eqs, A0, b0, at: dict, v0: Mapping) -> dict:
+    """The speeds left out of ``v0`` that the velocity constraints determine, solved symbolically from
+    ``A₀ q̇ + b₀ = 0``; the dependent set is chosen as the numeric route chooses it
+    (:func:`~lagrange.integrate.constrained.complete_speeds`), on ``A₀`` at random parameter values."""
+    free = [i for i, s in enumerate(eqs.qd) if s not in v0]
+    if not free:
+        return {}
+    syms = sorted(A0.free_symbols | b0.free_symbols, key=lambda s: s.name)
+    rnd = random.Random(1234)
+    sample = {s: sp.Float(rnd.uniform(1.1, 2.3)) for s in syms}
+    try:
+        An = np.array(A0.xreplace(sample).evalf(), dtype=float)
+    except (TypeError, ValueError):
+        return {}
+    if not np.all(np.isfinite(An)):  # singular here: the check of the reference state names it
+        return {}
+    dep = [free[j] for j in pivot_columns(An[:, free])]
+    if not dep:
+        return {}
+    rest = [i for i in range(eqs.n) if i not in dep]
+    rhs = -(b0 + A0.extract(list(range(A0.shape[0])), rest) * sp.Matrix([at[eqs.qd[i]] for i in rest]))
+    AD = A0.extract(list(range(A0.shape[0])), dep)
+    try:
+        sol = (AD.LUsolve(rhs) if AD.shape[0] == AD.shape[1] else (AD.T * AD).LUsolve(AD.T * rhs))
+    except (ValueError, ZeroDivisionError):
+        return {}
+    return {eqs.qd[i]: _tidy(v) for i, v in zip(dep, sol)}
 
 
 def _no_delta_matrix(X):
@@ -446,25 +486,16 @@ def random_values(blk) -> dict:
 
 
 def choose_dependent(J: np.ndarray, names: Sequence[str], what: str, rows: Sequence[str]) -> list[int]:
-    """Column indices of ``J`` (k × n, full row rank) to make dependent: a pivoted Gram–Schmidt that takes the
-    last declared column whose remaining norm is at least 0.1 of the largest (well conditioned, and keeps
-    the variables declared first independent). Raises when ``J`` is rank deficient (redundant constraints)."""
-    k = J.shape[0]
-    R = J.astype(float).copy()
-    scale = max(1.0, float(np.max(np.abs(J)))) if J.size else 1.0
-    chosen: list[int] = []
-    for _ in range(k):
-        norms = np.linalg.norm(R, axis=0)
-        norms[chosen] = 0.0
-        best = float(np.max(norms)) if norms.size else 0.0
-        if best <= 1e-10 * scale:
-            raise AnalysisError(f"the {what} are redundant or singular at the reference state (rank "
-                                f"{len(chosen)} < {k}: {', '.join(rows)})")
-        j = max(i for i in range(J.shape[1]) if norms[i] >= 0.1 * best)
-        v = R[:, j] / norms[j]
-        R = R - np.outer(v, v @ R)
-        chosen.append(j)
-    return sorted(chosen)
+    """Column indices of ``J`` (k × n, full row rank) to make dependent, by the rule of
+    :func:`lagrange.integrate.constrained.pivot_columns` (a pivoted Gram–Schmidt that takes the last declared
+    column whose remaining norm is at least 0.1 of the largest: well conditioned, and keeps the variables
+    declared first independent; the same rule computes the speeds left out of an initial state). Raises when
+    ``J`` is rank deficient (redundant constraints)."""
+    chosen = pivot_columns(J)
+    if len(chosen) < J.shape[0]:
+        raise AnalysisError(f"the {what} are redundant or singular at the reference state (rank "
+                            f"{len(chosen)} < {J.shape[0]}: {', '.join(rows)})")
+    return chosen
 
 
 # ----------------------------------------------------------------------------------------------- reduction

@@ -284,7 +284,10 @@ def linearize(system, about: Mapping | None = None, velocities: Mapping | None =
     system : System
     about : mapping — reference values of coordinates (default 0), and also of velocities (``x.diff(t)``,
         ``"x_dot"``; default 0, non-zero for a steady motion) and inputs (default 0), keyed by object or name.
-        Values may be expressions in the parameters. Unknown names raise.
+        Values may be expressions in the parameters. Unknown names raise. With constraints, the speeds left
+        out are computed from the velocity constraints (the rule of
+        :func:`~lagrange.integrate.constrained.complete_speeds`: give the spin of a rolling disc alone); given
+        values are never changed (an inconsistent reference state is refused).
     velocities : mapping, optional — reference velocities (the older spelling; same keys as in ``about``)
     params : mapping, optional — parameter values: the numeric route (float matrices, accurate to rounding:
         complex-step derivatives of the generated M, f, A, b, c, or their exact symbolic Jacobians when sign,
@@ -355,7 +358,7 @@ def linearize(system, about: Mapping | None = None, velocities: Mapping | None =
     ind_q = [coords[i] for i in red["ind_q"]]
     ref_q = {c: (float(blk["q"][i]) if blk["numeric"] else q0.get(position_symbol(c), sp.S.Zero))
              for i, c in enumerate(coords)}
-    ref_v = {c.diff(t): (float(blk["v"][i]) if blk["numeric"] else v0.get(velocity_symbol(c), sp.S.Zero))
+    ref_v = {c.diff(t): (float(blk["v"][i]) if blk["numeric"] else blk["v"][i])
              for i, c in enumerate(coords)}
     lam = [float(x) if blk["numeric"] else x for x in (blk["lam"] if blk["numeric"] else list(blk["lam"]))]
     return LinearModel(

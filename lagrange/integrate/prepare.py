@@ -27,15 +27,18 @@ from ..errors import (
 )
 from ..model.coordinates import coordinate_name, is_coordinate
 
-__all__ = ["initial_state", "model_for", "check_initial_mass_matrix", "refuse_route", "constant_input_run",
-           "split_inputs", "check_model",
+__all__ = ["initial_state", "given_entries", "model_for", "check_initial_mass_matrix", "refuse_route",
+           "constant_input_run", "split_inputs", "check_model",
            "GimbalLockWarning"]
 
 
-def initial_state(coords: Sequence, initial: Mapping) -> np.ndarray:
+def initial_state(coords: Sequence, initial: Mapping, *, speeds_optional: bool = False) -> np.ndarray:
     """``y0 = [q, q̇]`` from a dict keyed by coordinates, their derivatives or names (``"x_dot"``).
 
-    Raises :class:`InitialConditionError` naming every missing, unknown or non-finite entry.
+    ``speeds_optional`` (a constrained system): velocities left out are 0 here and computed by the run from
+    the velocity constraints (:func:`~lagrange.integrate.constrained.consistent_initial`; :func:`given_entries`
+    says which entries were given). Raises :class:`InitialConditionError` naming every missing, unknown or
+    non-finite entry.
     """
     names, slot_of = _slots(tuple(coords))
     n = len(names)
@@ -61,12 +64,29 @@ def initial_state(coords: Sequence, initial: Mapping) -> np.ndarray:
         if not math.isfinite(v):
             problems.append(f"initial value of {key} = {v} is not finite")
         values[idx], filled[idx] = v, True
+    if speeds_optional:
+        values[n:] = [v if f else 0.0 for v, f in zip(values[n:], filled[n:])]
+        filled[n:] = [True] * n
     if not all(filled):
         missing = [names[i] if i < n else names[i - n] + VELOCITY_SUFFIX for i in range(2 * n) if not filled[i]]
         problems.append(f"missing initial value(s) for {', '.join(missing)}")
     if problems:
         raise InitialConditionError("; ".join(problems))
     return np.array(values, dtype=float)
+
+
+def given_entries(coords: Sequence, initial: Mapping) -> list[bool]:
+    """Which of the 2n entries of ``[q, q̇]`` the dict ``initial`` gives (keys as in :func:`initial_state`)."""
+    _, slot_of = _slots(tuple(coords))
+    out = [False] * (2 * len(coords))
+    for key in initial:
+        try:
+            idx = slot_of.get(key)
+        except TypeError:
+            idx = None
+        if idx is not None:
+            out[idx] = True
+    return out
 
 
 @lru_cache(maxsize=256)

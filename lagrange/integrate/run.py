@@ -115,7 +115,10 @@ def simulate(
     Parameters
     ----------
     t_span : (t0, t1) or a number t1 (then t0 = 0)
-    initial : dict keyed by coordinates, their velocities (``q.diff(t)``) or names (``"q"``, ``"q_dot"``)
+    initial : dict keyed by coordinates, their velocities (``q.diff(t)``) or names (``"q"``, ``"q_dot"``); with
+        constraints the speeds left out are computed from the velocity constraints, and a given value moved onto
+        the constraints is named in an :class:`~lagrange.errors.InitialStateChangedWarning` (see
+        :func:`~lagrange.integrate.constrained.consistent_initial`)
     params : dict of parameter values keyed by symbol or name
     inputs : dict ``{input or name: value}``, one value for each input of the system
         (:mod:`lagrange.model.inputs`): a number, a function ``u(t)``, a feedback law ``u(t, y)`` of the state
@@ -190,7 +193,8 @@ def simulate(
         An option out of range (rtol, atol, n_points, max_step, step, t_eval, friction epsilon, Baumgarte
         gains), or a ``model`` compiled for another system; the message names the option and the limit.
     InitialConditionError, ParameterError
-        Missing or bad initial values, parameters or input values (all listed).
+        Missing or bad initial values, parameters or input values (all listed); a speed left out that the
+        velocity constraints do not determine; an inconsistent state with ``project_initial=False``.
     InputError
         An input callable that is neither ``u(t)`` nor ``u(t, y)``, or time-varying inputs on a route that
         cannot evaluate them.
@@ -233,7 +237,7 @@ def simulate(
         eqs, switches = NumericModel.regularized(eqs, fr.epsilon), []
     if eqs.planar_friction:  # friction over a surface: exact |v| (floored) or regularized sqrt(|v|² + ε²)
         eqs = NumericModel.planar_friction(eqs, fr.treatment, fr.epsilon)
-    y0 = initial_state(eqs.coordinates, initial)
+    y0 = initial_state(eqs.coordinates, initial, speeds_optional=bool(eqs.m))  # (computed: consistent_initial)
     check_output_size(int(n_points) if t_eval is None else max(len(t_eval), 2), y0.size, max_output_bytes)
     params, constants, schedule = split_inputs(eqs, params, inputs, (t0, t1), y0)
     needs = _needs(eqs, events, switches, schedule) | ({"dense_output": ""} if t_eval is not None else {})

@@ -21,7 +21,7 @@ from ..errors import IntegrationError, LagrangeError, SingularMassMatrixError
 from ..results.trajectory import Trajectory
 from .constrained import Projector, consistent_initial
 from .faults import FAULT_CAUSES, collapse_error, model_fault, state_text_of, with_partial
-from .prepare import check_initial_mass_matrix, model_for, refuse_route
+from .prepare import check_initial_mass_matrix, given_entries, model_for, refuse_route
 from .request import RunRequest
 from .stepper import STEPPABLE, StepLog, interrupt_of, interrupted_run, recording, step_loop
 
@@ -197,9 +197,10 @@ def run(req: RunRequest) -> Trajectory:
     model = model_for(eqs, req.params, req.model, backend, gains, inputs=req.constants, schedule=req.schedule,
                       bound=req.model_bound)
     y0 = req.y0
-    initial_report = {}
+    initial_report, adjustments = {}, {}
     if eqs.m:
-        y0, initial_report = consistent_initial(model, t0, y0, req.stabilization.project_initial)
+        y0, initial_report, adjustments = consistent_initial(model, t0, y0, req.stabilization.project_initial,
+                                                             given_entries(eqs.coordinates, req.initial))
     t_eval = np.linspace(t0, t1, req.n_points) if req.t_eval is None else req.t_eval
     if not req.switches:
         check_initial_mass_matrix(req.system, model, t0, y0)
@@ -210,11 +211,11 @@ def run(req: RunRequest) -> Trajectory:
                                       max_steps=req.max_steps)
         except ValueError as exc:  # bad t_eval or tolerances, worded as scipy words them
             raise IntegrationError(f"integration failed: {exc}") from exc
-    return _run_scipy(req, model, y0, t_eval, stabilization, notes, initial_report)
+    return _run_scipy(req, model, y0, t_eval, stabilization, notes, (initial_report, adjustments))
 
 
 def _run_scipy(req: RunRequest, model: NumericModel, y0, t_eval, stabilization: str, notes: list,
-               initial_report: dict) -> Trajectory:
+               initial_report: tuple) -> Trajectory:
     """scipy's loop: plain, projected, friction-switched or rough."""
     from .rough import run_rough
     from .switching import run_switched
@@ -281,7 +282,8 @@ def _run_scipy(req: RunRequest, model: NumericModel, y0, t_eval, stabilization: 
         nfev=int(res.nfev),
         work=None if conservative else Y[:, n2].copy(),
         initial=(t0, y0.copy()),
-        initial_constraint_violation=initial_report,
+        initial_constraint_violation=initial_report[0],
+        initial_adjustments=initial_report[1],
         point_params=getattr(res, "point_params", None),
         switches=(res.switched_model, res.sigma, res.transitions) if req.switches else (),
         t_events=list(res.t_events) if res.t_events is not None else [],

@@ -46,6 +46,10 @@ class Trajectory:
     work : ndarray (m,) or None — ∫ dh/dt dt from t0, present when the system is not conservative
     initial : (t0, y0) — the initial state (output times need not include t0)
     t_events, y_events : lists from scipy (one entry per event function)
+    initial_constraint_violation : ``{constraint: (φ, A q̇ + b)}`` of the user's initial state (constrained systems)
+    initial_adjustments : ``{name: (given value, value used)}`` of each initial value the run did not take as
+        given: computed from the velocity constraints (given value None) or changed by the projection onto the
+        constraints (:func:`lagrange.integrate.constrained.consistent_initial`)
     switches : dry friction with ``friction="events"``: (switched model, σ of every ``sign()`` at the output
         times (m, K), every stick/slip mode change as :class:`lagrange.integrate.switching.Transition`)
     verdict : the run's own accuracy checks (:class:`lagrange.results.verdict.Verdict`), computed once by
@@ -66,6 +70,7 @@ class Trajectory:
     initial: tuple = ()  # (t0, y0): the work integral starts there, whatever the output times
     switches: tuple = ()  # (switched model, sigma (m, K), Transition tuple) when sign() switches were integrated
     initial_constraint_violation: dict = field(default_factory=dict)  # user's state before projection
+    initial_adjustments: dict = field(default_factory=dict)  # {name: (given or None, used)} of the initial state
     point_params: np.ndarray | None = None  # per output point parameter vectors (rough-constraint signs)
     verdict: Verdict | None = None  # the run's own accuracy checks (lagrange.results.verdict)
 

@@ -26,6 +26,7 @@ import numpy as np
 
 from ..conventions import VELOCITY_SUFFIX
 from ..errors import SweepError
+from ..integrate.prepare import given_entries
 from ..integrate.run import initial_state
 from ..model.coordinates import coordinate_name
 from .pickling import dumps_task
@@ -92,8 +93,10 @@ class SimulationTask:
         self.system = system
         self.t_end = float(t_end)
         names = state_names(system)
-        y0 = initial_state(system.derived.coordinates, initial) if initial else None
-        self.initial = dict(zip(names, map(float, y0))) if y0 is not None else {}
+        coords = system.derived.coordinates  # (with constraints, speeds left out are computed by each run)
+        y0 = initial_state(coords, initial, speeds_optional=bool(system.derived.m)) if initial else None
+        given = given_entries(coords, initial) if initial else []
+        self.initial = {nm: float(v) for nm, v, g in zip(names, y0, given) if g} if y0 is not None else {}
         self.params = {k.name if hasattr(k, "name") else str(k): v for k, v in (params or {}).items()}
         self.inputs = {k.name if hasattr(k, "name") else str(k): v for k, v in (inputs or {}).items()}
         self.options = dict(options or {})
