@@ -53,7 +53,7 @@ def pendulum(tmp_path):
 
 def test_cartesian_pendulum_frequency_and_refusals(pendulum):
     """Regression: the CLI printed zero frequencies with exit status 0."""
-    out = run(pendulum, "--about", "y=-2")
+    out = run(pendulum, "--about", "y=-2", "--digits", "9")
     assert out.returncode == 0, out.stderr
     assert "independent coordinates (x)" in out.stdout
     assert f"{np.sqrt(9.81 / 2):.8f}" in out.stdout  # ω = sqrt(g/l)
@@ -66,9 +66,12 @@ def test_cartesian_pendulum_frequency_and_refusals(pendulum):
 def test_unstable_top_singular_default_and_unknown_names(pendulum):
     bad = run(pendulum, "--about", "y=-2", "--param", "k=3", "--about", "z=1")
     assert bad.returncode == 2 and "unknown parameter(s) k (parameters: g, l, m)" in bad.stderr
-    top = run(pendulum, "--about", "y=2")
+    top = run(pendulum, "--about", "y=2", "--digits", "9")
     assert top.returncode == 0 and "unstable" in top.stdout and "2.21472346" in top.stdout
-    singular = run(pendulum)  # q = 0: the constraint gradient is 0/0 there
+    found = run(pendulum)  # no point given: the stable equilibrium is found (q = 0 is singular: 0/0 gradient)
+    assert found.returncode == 0 and "equilibrium x = 0, y = -2 (stable" in found.stdout, found.stderr
+    assert "x = 0, y = 2 (unstable)" in found.stdout and "LAPACK" not in found.stderr
+    singular = run(pendulum, "--about", "x=0", "--about", "y=0")  # given there: refused, not a LAPACK trace
     assert singular.returncode == 2 and "singular" in singular.stderr and "LAPACK" not in singular.stderr
     unknown = run(pendulum, "--about", "z=1")
     assert unknown.returncode == 2 and "valid: x, y, x_dot, y_dot" in unknown.stderr
@@ -78,7 +81,8 @@ def test_unstable_top_singular_default_and_unknown_names(pendulum):
 def test_rolling_disc_operating_point_and_steady_motion(tmp_path):
     path = tmp_path / "disc.py"
     path.write_text(DISC_PROBLEM)
-    out = run(str(path), "--param", "Omega=1")  # the problem's operating point: upright, rolling at spin Ω
+    # the problem's operating point: upright, rolling at spin Ω
+    out = run(str(path), "--param", "Omega=1", "--digits", "9")
     assert out.returncode == 0, out.stderr
     assert "independent speeds (x_dot, q1_dot, q2_dot)" in out.stdout and "steady motion check" in out.stdout
     assert f"{np.sqrt(0.8 * (3 - 1)):.8f}" in out.stdout and "stable" in out.stdout  # λ² = (4/5)(g/r − 3Ω²)
