@@ -598,7 +598,9 @@ def _cmd_modes(args) -> int:
     params = {**{_name_of(k): v for k, v in spec.params.items()}, **given}
     input_names = [u.name for u in getattr(eqs, "inputs", ())]
     held = {**{_name_of(k): v for k, v in spec.inputs.items()}, **_kv(args.input, "input")}
-    check_names(held, input_names, "input", spec.label or args.spec)
+    wrong = sorted(set(held) - set(input_names))
+    if wrong:
+        raise SpecError(f"--input: unknown input(s) {', '.join(wrong)} (inputs: {', '.join(input_names) or 'none'})")
     about = {**operating, **_kv(args.about, "about")}
     missing = [n for n in own if n not in params]
     if missing:
