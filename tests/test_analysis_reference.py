@@ -131,3 +131,13 @@ def test_constrained_pendulum_without_a_point():
     assert lin.about == {x: 0.0, y: -2.0} and lin.multipliers["string"] == pytest.approx(-9.81)
     assert normal_modes(lin).omega == pytest.approx([np.sqrt(9.81 / 2.0)], rel=1e-12)
     assert "x = 0, y = 2 (unstable)" in lin.reference
+
+
+def test_constrained_symbolic_q0_on_the_manifold_but_not_an_equilibrium_is_refused():
+    x, y = coordinates("x y")
+    m, g = parameters("m g")
+    incline = System([x, y], bodies=[Particle(m, (x, y))], V=m * g * y, constraints=[Holonomic(y - x, "slope")])
+    with pytest.raises(AnalysisError, match=r"q = 0 \(x = 0, y = 0\) is not an equilibrium.*about="):
+        linearize(incline)  # on the slope at q = 0, but sliding down
+    level = System([x, y], bodies=[Particle(m, (x, y))], V=m * g * y ** 2, constraints=[Holonomic(y - x, "slope")])
+    assert linearize(level).about == {x: 0, y: 0}  # q = 0 is an equilibrium there: kept

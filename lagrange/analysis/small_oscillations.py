@@ -351,6 +351,11 @@ def linearize(system, about: Mapping | None = None, velocities: Mapping | None =
         raise TypeError("near= applies only when `about` gives no coordinates (it seeds the equilibrium search)")
     lin = _linearize_at(system, q0, v0, u0, params, inputs, independent, speeds)
     if choice is None:
+        if not q0 and not v0 and eqs.m and lin.acceleration is not None and \
+                not all(is_zero(a) for a in lin.acceleration):  # constrained, symbolic: q = 0 must be one
+            raise AnalysisError(f"q = 0 ({operating_point.point_text(lin.about)}) is not an equilibrium (q̈ = "
+                                f"{list(lin.acceleration)} there): pass `about=` (an equilibrium), or `params=` to "
+                                "have one found")
         return lin
     return dataclasses.replace(lin, reference=choice.describe(), equilibria=choice.found)
 
