@@ -141,3 +141,12 @@ def test_constrained_symbolic_q0_on_the_manifold_but_not_an_equilibrium_is_refus
         linearize(incline)  # on the slope at q = 0, but sliding down
     level = System([x, y], bodies=[Particle(m, (x, y))], V=m * g * y ** 2, constraints=[Holonomic(y - x, "slope")])
     assert linearize(level).about == {x: 0, y: 0}  # q = 0 is an equilibrium there: kept
+
+
+def test_bad_starting_points_are_refused_by_name():
+    s, r, _, _ = spring_pendulum()
+    for bad in ("__import__('os')", float("nan"), None):
+        with pytest.raises(AnalysisError, match=r"starting value of r must be a finite number"):
+            linearize(s, params=SPRING, near={"r": bad})
+    with pytest.raises(AnalysisError, match=r"z is not a coordinate or constraint name \(valid: r, theta\)"):
+        linearize(s, params=SPRING, near={"z": 1.0})

@@ -129,13 +129,14 @@ def _numeric_problem(system, params, guess, conds, unknowns):
     for k, v in (guess or {}).items():
         for i, c in enumerate(system.coordinates):
             if k in (c, coordinate_name(c), position_symbol(c)):
-                x0[i] = float(v)
+                x0[i] = _start_value(k, v)
                 break
         else:
             if k in eqs.constraint_names:
-                x0[n + eqs.constraint_names.index(k)] = float(v)
+                x0[n + eqs.constraint_names.index(k)] = _start_value(k, v)
             else:
-                raise AnalysisError(f"guess: {k} is not a coordinate or constraint name")
+                valid = ", ".join([coordinate_name(c) for c in system.coordinates] + list(eqs.constraint_names))
+                raise AnalysisError(f"guess: {k} is not a coordinate or constraint name (valid: {valid})")
     used = set().union(*[c.free_symbols for c in conds])
     fixed = {i: x0[i] for i, u in enumerate(unknowns) if u not in used}
     conds = [c for c in conds if c != 0]
@@ -148,6 +149,17 @@ def _numeric_problem(system, params, guess, conds, unknowns):
 
     keep = np.array([i not in fixed for i in range(len(unknowns))], dtype=bool)
     return F, unknowns, x0, (fixed, keep)
+
+
+def _start_value(key, value) -> float:
+    """A starting value as a finite float; AnalysisError naming the key otherwise (strings are not parsed)."""
+    try:
+        x = float(value) if not isinstance(value, str) else float("nan")
+    except (TypeError, ValueError):
+        x = float("nan")
+    if not np.isfinite(x):
+        raise AnalysisError(f"the starting value of {key} must be a finite number, got {value!r}")
+    return x
 
 
 def _solve_from(F, x0, unknowns, fixed, raise_singular=False):
@@ -204,6 +216,15 @@ def equilibria_near(system, params: Mapping, near: Mapping | None = None) -> lis
 
     Returns an empty list when no start converges; raises :class:`~lagrange.errors.AnalysisError` for rough
     or moving constraints and :class:`~lagrange.errors.LagrangeError` for missing parameter values.
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> from lagrange import Particle, System, coordinates, parameters
+    >>> th = coordinates("theta"); m, g, l = parameters("m g l")
+    >>> pendulum = System([th], bodies=[Particle(m, (l * sp.sin(th), -l * sp.cos(th)))], V=-m * g * l * sp.cos(th))
+    >>> [round(e[th], 6) for e in equilibria_near(pendulum, {"m": 1, "g": 9.81, "l": 1}, {"theta": 0.5})]
+    [0.0, 3.141593]
     """
     conds, unknowns = _conditions(system)
     F, unknowns, x0, fixed = _numeric_problem(system, params, near, conds, unknowns)
