@@ -6,7 +6,8 @@ equilibrium or a steady motion, and tabulates one row per mode: the characterist
 complex pair ``Re λ ± i|Im λ|``; a part below :data:`ROUNDING` of the largest root is shown as 0), the
 frequency ``ω = |Im λ|``, the damping ratio ``ζ = −Re λ/|λ|``, the period
 ``2π/ω`` and the mode shape by coordinate (the displacement part of the eigenvector of the state matrix, in
-all coordinates, scaled so that its largest component is 1). Inputs are held at constant values (their value
+all coordinates, scaled so that its largest component is 1; a k-fold root gets the null vectors of
+``𝒜 − λI`` one per row, repeating the last when the root is defective). Inputs are held at constant values (their value
 at t = 0 unless given). The CLI only formats the returned :class:`ModesReport`.
 """
 
@@ -170,14 +171,19 @@ def _rows(A: np.ndarray, roots: np.ndarray, n: int, C0, names: tuple, top: float
     """One row per real root and per complex pair (the member with Im > 0), by frequency then Re λ."""
     picked = [z for z in roots if z.imag >= -ROUNDING * top]
     rows = []
+    seen: list[complex] = []
     for z in sorted(picked, key=lambda z: (abs(z.imag), z.real)):
         z = complex(0.0 if abs(z.real) <= ROUNDING * top else z.real, 0.0 if abs(z.imag) <= ROUNDING * top else z.imag)
+        repeat = sum(1 for w in seen if abs(w - z) <= 1e-9 * top)  # a repeated root: the next null vector
+        seen.append(z)
         w = abs(z.imag)
         mag = abs(z)
         zeta = -z.real / mag + 0.0 if mag > ROUNDING * top else float("nan")
         period = 2 * np.pi / w if w > 0 else float("inf")
-        _, _, vh = np.linalg.svd(A - z * np.eye(A.shape[0]))
-        vec = vh[-1].conj()[:n]
+        _, sv, vh = np.linalg.svd(A - z * np.eye(A.shape[0]))
+        k = min(repeat, A.shape[0] - 1)
+        k = k if sv[-1 - k] <= 1e-9 * max(1.0, float(sv[0])) else 0  # defective: fewer eigenvectors than roots
+        vec = vh[-1 - k].conj()[:n]
         if C0 is not None:
             vec = C0 @ vec
         big = vec[np.argmax(np.abs(vec))] if vec.size else 1.0
