@@ -762,6 +762,14 @@ def _positive(text: str) -> float:
     return value
 
 
+def _digits(text: str) -> int:
+    """argparse type: significant digits, 1 to 17 (a double has no more)."""
+    value = _count(1)(text)
+    if value > 17:
+        raise argparse.ArgumentTypeError(f"{text!r} is more than 17 (a double has about 16 significant digits)")
+    return value
+
+
 def _count(minimum: int):
     def parse(text: str) -> int:
         try:
@@ -854,7 +862,7 @@ def _parser() -> argparse.ArgumentParser:
     p.add_argument("--param", action="append", metavar="NAME=VALUE", help="parameter values for numbers")
     p.add_argument("--input", action="append", metavar="NAME=VALUE",
                    help="hold an input at this value (default: its spec value at t = 0, else 0)")
-    p.add_argument("--digits", type=_count(1), default=6, help="significant digits of the table (default 6)")
+    p.add_argument("--digits", type=_digits, default=6, help="significant digits of the table, 1 to 17 (default 6)")
     p.add_argument("--json", action="store_true", help="print the report as JSON instead of the table")
     p.add_argument("--matrix", action="store_true", help="also print the state matrix, labelled by state")
     p.add_argument("--force", action="store_true", help="linearize even where the point is not an equilibrium")

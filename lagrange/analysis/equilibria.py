@@ -229,24 +229,10 @@ def equilibria_near(system, params: Mapping, near: Mapping | None = None) -> lis
     conds, unknowns = _conditions(system)
     F, unknowns, x0, fixed = _numeric_problem(system, params, near, conds, unknowns)
     n = system.derived.n
-    starts = [x0]
-    for i in range(n):
-        if i in fixed[0]:
-            continue
-        for d in (1.0, -1.0, np.pi, -np.pi):
-            x = x0.copy()
-            x[i] += d * max(1.0, abs(x0[i]))
-            starts.append(x)
-    rng = np.random.default_rng(0)
-    while len(starts) < MAX_STARTS:
-        x = x0.copy()
-        x[:n] += rng.normal(0.0, 2.0, n) * np.maximum(1.0, np.abs(x0[:n]))
-        for i in fixed[0]:
-            x[i] = x0[i]
-        starts.append(x)
+    starts = _starts(x0, n, fixed[0])
     periodic = _periodic(F, starts, n, fixed)
     found: list[np.ndarray] = []
-    for x in starts[:MAX_STARTS]:
+    for x in starts:
         sol, _ = _solve_from(F, x, unknowns, fixed)
         if sol is None:
             continue
@@ -258,6 +244,26 @@ def equilibria_near(system, params: Mapping, near: Mapping | None = None) -> lis
         sol[:n][np.abs(sol[:n]) < 1e-12 * max(1.0, float(np.max(np.abs(sol[:n]))))] = 0.0
     found.sort(key=lambda s: float(np.linalg.norm(s[:n] - x0[:n])))
     return [_as_equilibrium(system, unknowns, s, fixed) for s in found]
+
+
+def _starts(x0: np.ndarray, n: int, fixed: dict) -> list[np.ndarray]:
+    """x0; x0 ± 1 and ± π (times max(1, |x0ᵢ|)) along each coordinate not fixed; then seeded random points."""
+    starts = [x0]
+    for i in range(n):
+        if i in fixed:
+            continue
+        for d in (1.0, -1.0, np.pi, -np.pi):
+            x = x0.copy()
+            x[i] += d * max(1.0, abs(x0[i]))
+            starts.append(x)
+    rng = np.random.default_rng(0)
+    while len(starts) < MAX_STARTS:
+        x = x0.copy()
+        x[:n] += rng.normal(0.0, 2.0, n) * np.maximum(1.0, np.abs(x0[:n]))
+        for i in fixed:
+            x[i] = x0[i]
+        starts.append(x)
+    return starts[:MAX_STARTS]
 
 
 def _same(a: np.ndarray, b: np.ndarray, periodic: list[int]) -> bool:

@@ -191,3 +191,24 @@ def test_near_seeds_the_search(capsys, pendulum):
     assert status == 0, err
     report = json.loads(out)  # stable preferred even from near the top
     assert report["about"] == {"x": 0.0, "y": -2.0} and report["equilibria"][1] == {"x": 0.0, "y": 2.0}
+
+
+def test_damped_oscillator_table_and_digits_limits(tmp_path, capsys):
+    path = tmp_path / "damped.py"
+    path.write_text(textwrap.dedent('''
+        from lagrange import System, coordinates, parameters, t
+        x = coordinates("x")
+        m, k, b = parameters("m k b")
+        system = System([x], T=m * x.diff(t)**2 / 2, V=k * x**2 / 2, P=-b * x.diff(t)**2 / 2)
+        params = {"m": 2.0, "k": 8.0, "b": 1.2}
+    '''))
+    status, out, err = main_modes(capsys, str(path), "--json")
+    assert status == 0, err
+    (mode,) = json.loads(out)["modes"]
+    zeta, w0 = 1.2 / (2 * np.sqrt(8.0 * 2.0)), np.sqrt(8.0 / 2.0)  # ζ = b/(2√(km)), ω0 = √(k/m)
+    assert mode["damping_ratio"] == pytest.approx(zeta, rel=1e-12)
+    assert mode["eigenvalue"] == pytest.approx([-zeta * w0, w0 * np.sqrt(1 - zeta**2)], rel=1e-12)
+    assert mode["frequency"] == pytest.approx(w0 * np.sqrt(1 - zeta**2), rel=1e-12)
+    for bad in ("0", "18", "x"):
+        with pytest.raises(SystemExit):
+            main_modes(capsys, str(path), "--digits", bad)
