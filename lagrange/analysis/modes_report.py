@@ -117,8 +117,12 @@ def input_values_at_start(values: Mapping, params: Mapping) -> dict:
     number then."""
     out = {}
     for name, value in values.items():
-        if callable(value) and not isinstance(value, sp.Basic):
-            raise AnalysisError(f"input {name}: a function value cannot be held constant here; give a number")
+        if callable(value) and not isinstance(value, sp.Basic):  # a function of t, as simulate takes it
+            try:
+                value = float(value(0.0))
+            except Exception as exc:  # noqa: BLE001 - user code: any failure is reported by name
+                raise AnalysisError(f"input {name}: its function could not be evaluated at t = 0 ({exc}); give "
+                                    "a number") from None
         v = _sympify(value)
         v = v.xreplace({s: _sympify(params[s.name]) for s in v.free_symbols if s.name in params}).xreplace({t: 0})
         try:

@@ -212,3 +212,22 @@ def test_damped_oscillator_table_and_digits_limits(tmp_path, capsys):
     for bad in ("0", "18", "x"):
         with pytest.raises(SystemExit):
             main_modes(capsys, str(path), "--digits", bad)
+
+
+def test_python_spec_input_given_as_a_function_is_held_at_its_value_at_t0(tmp_path, capsys):
+    path = tmp_path / "pushed.py"
+    path.write_text(textwrap.dedent('''
+        import math
+        from lagrange import System, coordinates, inputs, parameters, t
+        x = coordinates("x")
+        m, k = parameters("m k")
+        F = inputs("F")
+        system = System([x], T=m * x.diff(t)**2 / 2, V=k * x**2 / 2, forces={x: F})
+        params = {"m": 1.0, "k": 4.0}
+        inputs = {F: lambda tt: 2.0 * math.cos(tt)}
+    '''))
+    status, out, err = main_modes(capsys, str(path), "--json")
+    assert status == 0, err
+    report = json.loads(out)  # F(0) = 2 holds the spring at x = F/k = 0.5
+    assert report["inputs"] == {"F": 2.0} and report["about"]["x"] == pytest.approx(0.5, rel=1e-12)
+    assert report["modes"][0]["frequency"] == pytest.approx(2.0, rel=1e-12)
