@@ -597,7 +597,8 @@ def _cmd_modes(args) -> int:
                         f"(parameters: {', '.join(valid) or 'none'})")
     params = {**{_name_of(k): v for k, v in spec.params.items()}, **given}
     input_names = [u.name for u in getattr(eqs, "inputs", ())]
-    held = {**{_name_of(k): v for k, v in spec.inputs.items()}, **_kv(args.input, "input")}
+    flags = _kv(args.input, "input")
+    held = {**{_name_of(k): v for k, v in spec.inputs.items()}, **flags}
     wrong = sorted(set(held) - set(input_names))
     if wrong:
         raise SpecError(f"--input: unknown input(s) {', '.join(wrong)} (inputs: {', '.join(input_names) or 'none'})")
@@ -615,11 +616,13 @@ def _cmd_modes(args) -> int:
 
         print(json.dumps(report.to_dict(), indent=2))
         return 0
-    _print_report(report, args.digits, args.matrix, {n: n in held for n in input_names})
+    how = {n: "--input" if n in flags else "the spec's value at t = 0" if n in held else "no value given"
+           for n in input_names}
+    _print_report(report, args.digits, args.matrix, how)
     return 0
 
 
-def _print_report(report, digits: int, matrix: bool, given_inputs: dict) -> None:
+def _print_report(report, digits: int, matrix: bool, input_sources: dict) -> None:
     """The text form of a :class:`~lagrange.analysis.modes_report.ModesReport`."""
     from .analysis.operating_point import point_text
     from .model.coordinates import coordinate_name
@@ -630,8 +633,8 @@ def _print_report(report, digits: int, matrix: bool, given_inputs: dict) -> None
     if moving:
         print("reference velocities: " + ", ".join(f"{k} = {float(v):.{digits}g}" for k, v in moving.items()))
     for name, value in report.inputs.items():
-        how = "as given" if given_inputs.get(name) else "no value given" if value == 0 else "its value at t = 0"
-        print(f"input {name} held at {value:.{digits}g} ({how}; --input {name}=VALUE to change)")
+        print(f"input {name} held at {value:.{digits}g} ({input_sources.get(name, 'given')}; --input {name}=VALUE "
+              "to change)")
     if lin.is_constrained:
         speeds = ", ".join(coordinate_name(v.args[0]) + "_dot" for v in lin.speeds)
         print(f"constrained system, linearized on the constraint manifold: independent coordinates "

@@ -175,7 +175,9 @@ def test_a_spec_with_an_input_runs_as_simulate_accepts_it(tmp_path, capsys):
     assert status == 2 and "inputs held at F = 1" in err and "--input F=0" in err and "unknown" not in err
     status, out, err = main_modes(capsys, str(spec), "--input", "F=0")
     assert status == 0, err
-    assert "input F held at 0 (as given" in out and "any value of x is an equilibrium" in out
+    assert "input F held at 0 (--input;" in out and "any value of x is an equilibrium" in out
+    status, out, err = main_modes(capsys, str(spec), "--param", "F0=0")
+    assert status == 0 and "input F held at 0 (the spec's value at t = 0;" in out, err
     status, out, err = main_modes(capsys, str(spec), "--param", "F0=0", "--json")  # a parameter of the input only
     assert status == 0, err
     report = json.loads(out)
