@@ -596,12 +596,7 @@ def _cmd_verify(args) -> int:
 
 def _cmd_modes(args) -> int:
     spec = _load(args.spec)  # first: a mistyped id is answered from the index before sympy loads
-    import numpy as np
     import sympy
-
-    from .analysis.small_oscillations import characteristic_roots, linearize, normal_modes
-    from .conventions import t as t_sym
-    from .printing import pretty
 
     if spec.system is None:
         raise SpecError(f"{args.spec}: this problem has no equations of motion")
@@ -609,84 +604,135 @@ def _cmd_modes(args) -> int:
     eqs = system.derived
     operating = dict(getattr(spec.problem, "operating_point", None) or {})
     free = set().union(*[sympy.sympify(v).free_symbols for v in operating.values() if not isinstance(v, str)])
-    names = sorted({p.name for p in eqs.parameters} | {s.name for s in free})  # e.g. a speed v of the operating point
+    own = sorted({p.name for p in eqs.parameters} | {s.name for s in free})  # e.g. a speed v of the operating point
     given = _kv(args.param, "param")
-    unknown = sorted(set(given) - set(names))
+    valid = sorted(set(own) | _input_parameters(spec))
+    unknown = sorted(set(given) - set(valid))
     if unknown:
         raise SpecError(f"--param: unknown parameter(s) {', '.join(unknown)} "
-                        f"(parameters: {', '.join(names) or 'none'})")
-    params = {**{getattr(k, "name", str(k)): v for k, v in spec.params.items()}, **given}
+                        f"(parameters: {', '.join(valid) or 'none'})")
+    params = {**{_name_of(k): v for k, v in spec.params.items()}, **given}
+    input_names = [u.name for u in getattr(eqs, "inputs", ())]
+    flags = _kv(args.input, "input")
+    held = {**{_name_of(k): v for k, v in spec.inputs.items()}, **flags}
+    wrong = sorted(set(held) - set(input_names))
+    if wrong:
+        raise SpecError(f"--input: unknown input(s) {', '.join(wrong)} (inputs: {', '.join(input_names) or 'none'})")
     about = {**operating, **_kv(args.about, "about")}
-    numeric = all(n in params for n in names)
-    constrained = bool(eqs.m)
-    shown = ", ".join(f"{getattr(k, 'name', k)} = {v}" for k, v in about.items()) or "q = 0"
-    if not constrained:
-        lin = linearize(system, about)
+    missing = [n for n in own if n not in params]
+    if missing:
+        return _modes_symbolic(args, system, about, missing)
+    from .analysis.modes_report import input_values_at_start, modes_report
+
+    inputs = {**{n: 0.0 for n in input_names}, **input_values_at_start(held, params)}
+    report = modes_report(system, {k: v for k, v in params.items() if k in own}, about, inputs=inputs,
+                          force=args.force, near=_kv(args.near, "near") or None)
+    if args.json:
+        import json
+
+        print(json.dumps(report.to_dict(), indent=2))
+        return 0
+    how = {n: "--input" if n in flags else "the spec's value at t = 0" if n in held else "no value given"
+           for n in input_names}
+    _print_report(report, args.digits, args.matrix, how)
+    return 0
+
+
+def _print_report(report, digits: int, matrix: bool, input_sources: dict) -> None:
+    """The text form of a :class:`~lagrange.analysis.modes_report.ModesReport`."""
+    from .analysis.operating_point import point_text
+    from .model.coordinates import coordinate_name
+
+    lin = report.linear
+    print(lin.reference or f"linearized about {point_text(lin.about, digits)} (given)")
+    moving = {coordinate_name(v.args[0]) + "_dot": x for v, x in lin.velocities.items() if float(x) != 0}
+    if moving:
+        print("reference velocities: " + ", ".join(f"{k} = {float(v):.{digits}g}" for k, v in moving.items()))
+    for name, value in report.inputs.items():
+        print(f"input {name} held at {value:.{digits}g} ({input_sources.get(name, 'given')}; --input {name}=VALUE "
+              "to change)")
+    if lin.is_constrained:
+        speeds = ", ".join(coordinate_name(v.args[0]) + "_dot" for v in lin.speeds)
+        print(f"constrained system, linearized on the constraint manifold: independent coordinates "
+              f"({', '.join(map(coordinate_name, lin.coordinates))}), independent speeds ({speeds})")
+        print("multipliers at the reference: " + ", ".join(f"{k} = {float(v):.{digits}g}"
+                                                           for k, v in lin.multipliers.items()))
+    check = f"max |q''| at the reference = {report.residual:.3g}"
+    article = "a" if report.kind == "steady motion" else "an"
+    print(f"{report.kind} check: {check}" if report.is_reference else
+          f"warning: not {article} {report.kind} ({check}); linearized anyway (--force)")
+    print()
+    print(_modes_table(report, digits))
+    print("stable (every real part <= 0)" if report.stable else "unstable (a root has a positive real part)")
+    if matrix:
+        print("\nstate matrix (x' = A x):")
+        print(_table([[""] + list(report.state_labels)] + [[lab] + [f"{x:.{digits}g}" for x in row] for lab, row
+                                                              in zip(report.state_labels, report.state_matrix)]))
+
+
+def _modes_table(report, digits: int) -> str:
+    import numpy as np
+
+    def num(x: float) -> str:
+        return "-" if x != x else "inf" if x == float("inf") else f"{x + 0.0:.{digits}g}"  # + 0.0: no "-0"
+
+    def cpx(z: complex) -> str:
+        if z.imag == 0:
+            return num(z.real)
+        return f"{num(z.real)} ± {num(abs(z.imag))}i"
+
+    def amp(z: complex) -> str:
+        if abs(z.imag) <= 1e-9 * max(1.0, abs(z)):
+            return num(z.real)
+        return f"{num(abs(z))}∠{num(float(np.degrees(np.angle(z))))}°"
+
+    head = ["mode", "eigenvalue", "frequency", "damping ratio", "period"] + list(report.shape_coordinates)
+    rows = [[str(k + 1), cpx(r.eigenvalue), num(r.frequency), num(r.damping_ratio), num(r.period)]
+            + [amp(r.shape[c]) for c in report.shape_coordinates] for k, r in enumerate(report.rows)]
+    note = ("(frequency ω = |Im λ|, damping ratio ζ = −Re λ/|λ|, period 2π/ω; the shape columns are each "
+            "coordinate's amplitude, largest 1)")
+    return _table([head] + rows) + "\n" + note
+
+
+def _table(rows: list) -> str:
+    widths = [max(len(r[i]) for r in rows) for i in range(len(rows[0]))]
+    return "\n".join("  ".join(c.ljust(w) for c, w in zip(r, widths)).rstrip() for r in rows)
+
+
+def _modes_symbolic(args, system, about: dict, missing: list) -> int:
+    """Without numbers: Wells' symbolic a, b, c (and |a ω² − c| = 0) at the given point or the equilibrium."""
+    import sympy
+
+    from .analysis.modes_report import symbolic_residual
+    from .analysis.operating_point import point_text
+    from .analysis.small_oscillations import linearize
+    from .printing import pretty
+
+    eqs = system.derived
+    if eqs.m and eqs.n > 4:  # the symbolic route would take long on a big constrained system
+        raise SpecError(f"give --param values for {', '.join(missing)}: a constrained system with {eqs.n} "
+                        "coordinates is linearized numerically")
+    lin = linearize(system, about or None)
+    print(lin.reference or f"linearized about {point_text(lin.about)}:  a s'' + b s' + c s = F")
+    if eqs.m:
+        _print_constrained(lin, pretty)
+    else:
         bad = [nm for nm, X in (("a", lin.a), ("b", lin.b), ("c", lin.c)) if X.has(sympy.nan, sympy.zoo, sympy.oo)]
         if bad:
-            raise SpecError(f"the equations are singular at {shown} ({', '.join(bad)} not finite): "
-                            "choose another point")
-        print(f"linearized about {shown}:  a s'' + b s' + c s = F")
+            raise SpecError(f"the equations are singular at {point_text(lin.about)} ({', '.join(bad)} not finite): "
+                            "choose another point with --about")
         for label, mat in (("a", lin.a), ("b", lin.b), ("c", lin.c)):
             print(f"{label} =\n{pretty(mat)}")
         if lin.a.shape[0] <= 3 and all(v == 0 for v in lin.b) and lin.a.det() != 0:
             print(f"frequency equation |a w^2 - c| = 0:\n{pretty(sp_factor(lin.frequency_equation()))} = 0")
-    if not numeric:
-        missing = [n for n in names if n not in params]
-        if constrained and eqs.n > 4:  # the symbolic route would take long on a big constrained system
-            raise SpecError(f"give --param values for {', '.join(missing)}: a constrained system with {eqs.n} "
-                            "coordinates is linearized numerically")
-        if constrained:
-            lin = linearize(system, about)
-            _print_constrained(lin, pretty)
-        residual = lin.acceleration if lin.acceleration is not None else tuple(lin.forcing)
-        from .simplification import simplify  # bounded clean-up (lagrange.limits)
-
-        residual = [simplify(sympy.sympify(e).subs(t_sym, 0)) for e in residual]
-        if any(e != 0 for e in residual):
-            if not args.force:
-                raise SpecError(f"the reference state ({shown}) is not an equilibrium: q'' (or F) = {residual} there; "
-                                "choose an equilibrium (see `lagrange.equilibria`) or pass --force")
-            print(f"warning: not an equilibrium: q'' (or F) = {residual}; linearized anyway (--force)")
-        print(f"(give --param values for {', '.join(missing)} to get numbers)")
-        return 0
-    lin = linearize(system, about, params=params)
-    if constrained:
-        _print_constrained(lin, pretty)
-    A, _ = lin.numeric_state()
-    acc = np.abs(np.asarray(lin.acceleration, dtype=float))
-    residual = float(acc.max()) if acc.size else 0.0
-    moving = any(float(v) != 0 for v in lin.velocities.values())
-    kind = "a steady motion" if moving else "an equilibrium"
-    when = " (at t = 0; the forcing depends on t)" if not eqs.is_autonomous else ""
-    print(f"{kind[kind.index(' ') + 1:]} check: max |q''| at the reference = {residual:.3g}{when}")
-    if residual > 1e-8 * (1.0 + float(np.max(np.abs(A)))):
+    residual = symbolic_residual(lin)
+    if any(e != 0 for e in residual):
         if not args.force:
-            raise SpecError(f"the reference state ({shown}) is not {kind}: the accelerations there are "
-                            f"{np.array2string(np.asarray(lin.acceleration), precision=4)}; choose {kind} "
-                            "(see `lagrange.equilibria`) or pass --force to linearize there anyway")
-        print(f"warning: not {kind}; linearized anyway (--force)")
-    roots = characteristic_roots(lin)
-    print("\neigenvalues of the state matrix (characteristic roots):", np.array2string(roots, precision=8))
-    tol = 1e-6 * max(1.0, float(np.max(np.abs(roots)))) if roots.size else 0.0
-    print("stable (all real parts <= 0)" if np.all(roots.real <= tol) else "unstable (a root has a positive real part)")
-    if lin.a is None:
-        print("(non-holonomic: no second-order form, so no normal modes)")
-        return 0
-    try:  # b = 0: real modes; gyroscopic b: frequencies |Im| of the roots; damped b: refused (roots only)
-        modes = normal_modes(lin)
-    except LagrangeError as exc:
-        print(f"no normal modes: {exc}")
-        return 0
-    gyroscopic = modes.kind == "gyroscopic"
-    print("angular frequencies" + (" (|Im| of the characteristic roots; gyroscopic b)" if gyroscopic else "") + ":",
-          np.array2string(modes.omega, precision=8))
-    print("periods:", np.array2string(modes.periods, precision=8))
-    kind = "complex amplitudes and phases" if gyroscopic else "normalized to a"
-    print(f"mode shapes (columns, {kind}):\n", np.array2string(modes.shapes, precision=6))
-    if constrained:
-        labels = ", ".join(str(getattr(q, "name", q)) for q in eqs.q)
-        print(f"mode shapes in all coordinates ({labels}):\n", np.array2string(modes.full_shapes, precision=6))
+            raise SpecError(f"the reference state ({point_text(lin.about)}) is not an equilibrium: q'' (or F) = "
+                            f"{residual} there; leave out --about to have the equilibrium found, give --param "
+                            f"values for {', '.join(missing)} to have the equilibria near it listed, or pass --force")
+        print(f"warning: not an equilibrium: q'' (or F) = {residual}; linearized anyway (--force)")
+    print(f"(give --param values for {', '.join(missing)} to get numbers)")
     return 0
 
 
@@ -699,10 +745,9 @@ def _print_constrained(lin, pretty) -> None:
     print("multipliers at the reference:", ", ".join(f"{k} = {v}" for k, v in lin.multipliers.items()))
     if lin.a is not None:
         for label, mat in (("a", lin.a), ("b", lin.b), ("c", lin.c)):
-            print(f"{label} =\n{pretty(mat) if lin.params is None else mat}")
+            print(f"{label} =\n{pretty(mat)}")
     else:
-        shown = pretty(lin.A) if lin.params is None else lin.A
-        print(f"state matrix (x = independent coordinates, then speeds):\n{shown}")
+        print(f"state matrix (x = independent coordinates, then speeds):\n{pretty(lin.A)}")
 
 
 def sp_factor(e):
@@ -733,6 +778,14 @@ def _positive(text: str) -> float:
         raise argparse.ArgumentTypeError(f"{text!r} is not a number") from None
     if not (math.isfinite(value) and value > 0):
         raise argparse.ArgumentTypeError(f"{text!r} is not a positive finite number")
+    return value
+
+
+def _digits(text: str) -> int:
+    """argparse type: significant digits, 1 to 17 (a double has no more)."""
+    value = _count(1)(text)
+    if value > 17:
+        raise argparse.ArgumentTypeError(f"{text!r} is more than 17 (a double has about 16 significant digits)")
     return value
 
 
@@ -826,9 +879,16 @@ def _parser() -> argparse.ArgumentParser:
     p = sub.add_parser("modes", help="linearize about an equilibrium: matrices, frequencies, mode shapes")
     p.add_argument("spec", help=spec_help)
     p.add_argument("--about", action="append", metavar="q=VALUE",
-                   help="reference coordinate values (default: the problem's operating point, else 0) and velocities "
-                        "(q_dot=VALUE, for a steady motion)")
+                   help="reference coordinate values (default: the problem's operating point, else the "
+                        "equilibrium found) and velocities (q_dot=VALUE, for a steady motion)")
+    p.add_argument("--near", action="append", metavar="q=VALUE", help="without --about: start the equilibrium "
+                   "search here (default: every coordinate 0)")
     p.add_argument("--param", action="append", metavar="NAME=VALUE", help="parameter values for numbers")
+    p.add_argument("--input", action="append", metavar="NAME=VALUE",
+                   help="hold an input at this value (default: its spec value at t = 0, else 0)")
+    p.add_argument("--digits", type=_digits, default=6, help="significant digits of the table, 1 to 17 (default 6)")
+    p.add_argument("--json", action="store_true", help="print the report as JSON instead of the table")
+    p.add_argument("--matrix", action="store_true", help="also print the state matrix, labelled by state")
     p.add_argument("--force", action="store_true", help="linearize even where the point is not an equilibrium")
     p.set_defaults(func=_cmd_modes)
 

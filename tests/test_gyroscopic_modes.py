@@ -1,5 +1,6 @@
 """normal_modes with a gyroscopic or damping matrix b: frequencies from the roots of |a λ² + b λ + c| = 0."""
 
+import json
 import subprocess
 import sys
 import textwrap
@@ -157,16 +158,15 @@ def test_cli_modes_prints_frequencies_from_the_roots(tmp_path):
     th0 = 0.6
     w = np.sqrt(G / (L * np.cos(th0)))
     out = subprocess.run([sys.executable, "-m", "lagrange.cli", "modes", str(spec), "--about", f"theta={th0}",
-                          "--about", f"phi_dot={float(w)!r}"], capture_output=True, text=True, timeout=300)
+                          "--about", f"phi_dot={float(w)!r}", "--json"], capture_output=True, text=True, timeout=300)
     assert out.returncode == 0, out.stderr
-    lines = out.stdout.splitlines()
-    freq = next(ln for ln in lines if ln.startswith("angular frequencies"))
-    period = next(ln for ln in lines if ln.startswith("periods"))
-    numbers = lambda line: [float(v) for v in line.split("[")[1].rstrip("]").split()]  # noqa: E731
+    report = json.loads(out.stdout)
     omega = conical_closed_form(th0)
-    assert "characteristic roots" in freq
-    assert numbers(freq) == pytest.approx([0.0, omega], rel=1e-7, abs=1e-12)
-    assert numbers(period)[1] == pytest.approx(2 * np.pi / omega, rel=1e-7)
+    freq = [m["frequency"] for m in report["modes"]]
+    assert report["kind"] == "steady motion" and report["stable"]
+    assert freq == pytest.approx([0.0, 0.0, omega], rel=1e-7, abs=1e-12)  # φ ignorable: a double root 0
+    assert report["modes"][-1]["period"] == pytest.approx(2 * np.pi / omega, rel=1e-7)
+    assert report["modes"][-1]["eigenvalue"] == pytest.approx([0.0, omega], rel=1e-7, abs=1e-12)
 
 
 @pytest.mark.parametrize("root", [1, -1], ids=["slow precession", "fast precession"])

@@ -351,9 +351,12 @@ def _reference_accelerations(blk, eqs):
     try:
         sol = np.linalg.solve(K, rhs)
     except np.linalg.LinAlgError:
-        raise AnalysisError("the mass matrix (with the constraints) is singular at the reference state") from None
-    if not np.all(np.isfinite(sol)) or np.linalg.cond(K) > 1e14:
-        raise AnalysisError("the mass matrix (with the constraints) is singular at the reference state")
+        sol = None
+    if sol is None or not np.all(np.isfinite(sol)) or np.linalg.cond(K) > 1e14:
+        what = "the mass matrix with the constraint rows [M −Aᵀ; A 0]" if m else "the mass matrix"
+        state = ", ".join(f"{s.name} = {x:.6g}" for s, x in zip(eqs.q, blk["q"]))
+        raise AnalysisError(f"{what} is singular at the reference state {state} (a coordinate singularity): "
+                            "linearize at another point (`about=`; in the shell `--about q=VALUE`)")
     return sol[:n], sol[n:]
 
 

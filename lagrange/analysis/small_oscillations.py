@@ -30,6 +30,8 @@ system and reused for every operating point); without, symbolic (small systems, 
 
 from __future__ import annotations
 
+import dataclasses
+import logging
 from collections.abc import Mapping, Sequence
 from dataclasses import field
 
@@ -45,8 +47,10 @@ from ..records import record
 from ..safe_sympify import expression as _expression
 from ..safe_sympify import sympify as _sympify
 from ..simplification import factor, is_zero, simplify, solve
-from . import manifold
+from . import manifold, operating_point
 from .equilibria import Equilibrium, equilibria, equilibrium_equations
+
+log = logging.getLogger("lagrange.analysis")
 
 __all__ = ["equilibrium_equations", "equilibria", "Equilibrium", "linearize", "LinearModel", "Modes",
            "normal_modes", "characteristic_roots"]
@@ -97,6 +101,9 @@ class LinearModel:
     input_forces : ``G`` (second-order form) or None
     acceleration : tuple or None — the reference accelerations ``q̈₀`` of all coordinates (zero at an
         equilibrium or a steady motion; None when not computed: unconstrained symbolic route, see ``forcing``)
+    reference : str — how ``about`` was chosen when no point was given (empty when it was given)
+    equilibria : tuple — the equilibria found then (the chosen one first), each an
+        :class:`~lagrange.analysis.equilibria.Equilibrium`
     """
 
     coordinates: tuple
@@ -116,6 +123,8 @@ class LinearModel:
     params: dict | None = None
     input_forces: object = None
     acceleration: tuple | None = None
+    reference: str = ""
+    equilibria: tuple = ()
 
     def __repr__(self) -> str:
         kind = "numeric" if self.params is not None else "symbolic"
@@ -123,8 +132,9 @@ class LinearModel:
         w = ", ".join(velocity_symbol(coordinate_of(v)).name for v in self.speeds) if self.speeds else s + " rates"
         form = "a s'' + b s' + c s = F" if self.a is not None else "x' = A x + B u (no second-order form)"
         cons = f", multipliers {self.multipliers}" if self.multipliers else ""
-        return (f"LinearModel({kind}; {form}; independent coordinates ({s}); independent speeds ({w}); "
-                f"inputs ({', '.join(u.name for u in self.inputs)}){cons})")
+        return (f"LinearModel({kind}; about {operating_point.point_text(self.about)}; {form}; independent "
+                f"coordinates ({s}); independent speeds ({w}); inputs ({', '.join(u.name for u in self.inputs)})"
+                f"{cons})")
 
     @property
     def is_constrained(self) -> bool:
@@ -276,16 +286,21 @@ def _dependent(system, given, J, count_rows: Sequence[int], what: str, velocity:
 @bounded("linearization")
 def linearize(system, about: Mapping | None = None, velocities: Mapping | None = None, *,
               params: Mapping | None = None, inputs: Sequence | None = None,
-              independent: Sequence | None = None, speeds: Sequence | None = None) -> LinearModel:
+              independent: Sequence | None = None, speeds: Sequence | None = None,
+              near: Mapping | None = None) -> LinearModel:
     r"""Linearize about a reference state, on the constraint manifold when there are constraints.
 
     Parameters
     ----------
     system : System
-    about : mapping — reference values of coordinates (default 0), and also of velocities (``x.diff(t)``,
+    about : mapping — reference values of coordinates, and also of velocities (``x.diff(t)``,
         ``"x_dot"``; default 0, non-zero for a steady motion) and inputs (default 0), keyed by object or name.
-        Values may be expressions in the parameters. Unknown names raise. With constraints, the speeds left
-        out are computed from the velocity constraints (the rule of
+        Values may be expressions in the parameters. Unknown names raise. Coordinates left out of a point
+        that names some are 0. **No coordinate given (and at rest): an equilibrium is found** — with
+        ``params`` the stable one nearest to ``near`` (else the nearest), without numbers q = 0 when it is an
+        equilibrium, else a sympy solution (refused when there is none); the result's ``about``,
+        ``reference`` and ``equilibria`` record the choice (see :mod:`lagrange.analysis.operating_point`).
+        With constraints, the speeds left out are computed from the velocity constraints (the rule of
         :func:`~lagrange.integrate.constrained.complete_speeds`: give the spin of a rolling disc alone); given
         values are never changed (an inconsistent reference state is refused).
     velocities : mapping, optional — reference velocities (the older spelling; same keys as in ``about``)
@@ -297,6 +312,8 @@ def linearize(system, about: Mapping | None = None, velocities: Mapping | None =
     independent : sequence, optional — the independent coordinates (default: chosen by pivoting, keeping
         the coordinates declared first independent)
     speeds : sequence, optional — the independent speeds (velocities or coordinate names)
+    near : mapping, optional — where the equilibrium search starts (coordinates by object or name; default
+        0); only with ``params`` and without coordinates in ``about``
 
     Returns
     -------
@@ -310,7 +327,8 @@ def linearize(system, about: Mapping | None = None, velocities: Mapping | None =
     AnalysisError
         Reference state off the constraint manifold (with the residuals), unknown names, redundant or
         singular constraints, an unusable choice of independent variables, rough or moving constraints, a
-        friction term at its switching point, or a singular mass matrix.
+        friction term at its switching point, a singular mass matrix, or no point given and no equilibrium
+        found (the message says to pass ``about=``).
 
     Examples
     --------
@@ -329,6 +347,59 @@ def linearize(system, about: Mapping | None = None, velocities: Mapping | None =
         raise AnalysisError(f"inputs must be plain Symbols, got {bad}")
     manifold.check_supported(eqs)
     q0, v0, u0 = manifold.reference_state(system, about, velocities, inputs)
+    choice = None
+    if not q0 and all(is_zero(v) for v in v0.values()):  # no point given: an equilibrium, never q = 0 blindly
+        choice = _choose_reference(system, params, near, u0, inputs)
+        if choice is not None:
+            q0 = {position_symbol(q): _sympify(v) for q, v in choice.point.items()}
+            log.info(choice.describe())
+    elif near is not None:
+        raise TypeError("near= applies only when `about` gives no coordinates (it seeds the equilibrium search)")
+    lin = _linearize_at(system, q0, v0, u0, params, inputs, independent, speeds)
+    if choice is None:
+        if not q0 and not v0 and eqs.m and lin.acceleration is not None and \
+                not all(is_zero(a) for a in lin.acceleration):  # constrained, symbolic: q = 0 must be one
+            raise AnalysisError(f"q = 0 ({operating_point.point_text(lin.about)}) is not an equilibrium (q̈ = "
+                                f"{list(lin.acceleration)} there): pass `about=` (an equilibrium), or `params=` to "
+                                "have one found")
+        return lin
+    return dataclasses.replace(lin, reference=choice.describe(), equilibria=choice.found)
+
+
+def _choose_reference(system, params, near, u0, inputs):
+    """The equilibrium to use when no point is given (see :mod:`lagrange.analysis.operating_point`); None
+    for a constrained system without numbers (its own checks then refuse q = 0 unless it is an equilibrium)."""
+    if params is not None:
+        given = {**_by_name(params), **{u.name: v for u, v in u0.items()}}
+
+        def stability(point):
+            try:
+                return _is_stable(characteristic_roots(linearize(system, dict(point), params=given, inputs=inputs)))
+            except (LagrangeError, np.linalg.LinAlgError):
+                return None
+
+        return operating_point.numeric_choice(system, given, near, stability)
+    if near is not None:
+        raise TypeError("near= needs params= (the equilibrium search is numeric)")
+    if system.derived.m:
+        return None
+
+    def sampled(point, values):
+        try:
+            return _is_stable(characteristic_roots(linearize(system, point, params=values, inputs=inputs)))
+        except (LagrangeError, np.linalg.LinAlgError):
+            return None
+
+    return operating_point.symbolic_choice(system, u0, sampled)
+
+
+def _is_stable(roots: np.ndarray) -> bool:
+    top = max(1.0, float(np.max(np.abs(roots)))) if roots.size else 1.0
+    return bool(np.all(roots.real <= operating_point.STABLE_TOL * top))
+
+
+def _linearize_at(system, q0, v0, u0, params, inputs, independent, speeds) -> LinearModel:
+    eqs = system.derived
     if not eqs.m and params is None and independent is None and speeds is None:
         return _unconstrained_symbolic(system, q0, v0, u0, inputs)
     if params is not None:
@@ -538,10 +609,13 @@ def normal_modes(linear, params: Mapping | None = None, **kwargs) -> Modes:
     try:
         w2, Phi = scipy.linalg.eigh(c, a)
     except np.linalg.LinAlgError as exc:
-        raise LagrangeError(f"the mass matrix at the equilibrium is not positive definite: {exc}") from None
+        raise LagrangeError(f"the mass matrix at {operating_point.point_text(linear.about)} is not positive "
+                            f"definite: {exc}") from None
     scale = max(1.0, float(np.max(np.abs(w2))))
     if np.any(w2 < -1e-10 * scale):
-        raise LagrangeError(f"unstable equilibrium: negative ω² {w2[w2 < 0]} (c is not positive semi-definite)")
+        raise LagrangeError(f"unstable equilibrium at {operating_point.point_text(linear.about)}: negative ω² "
+                            f"{w2[w2 < 0]} (c is not positive semi-definite); characteristic_roots gives the "
+                            "growth rates")
     w2 = np.where(np.abs(w2) < 1e-12 * scale, 0.0, w2)
     return Modes(np.sqrt(np.maximum(w2, 0.0)), Phi, a, c, *coords, full(Phi))
 

@@ -33,7 +33,7 @@ import sympy as sp
 
 from ..errors import DeclarationError
 from ..safe_sympify import sympify as _sympify
-from ..simplification import is_zero
+from ..simplification import is_zero, simplify
 from .bodies import MaterialPoint, Particle
 from .constraints import Holonomic
 from .coordinates import normalize_time, time_derivative
@@ -187,7 +187,7 @@ def _unit(direction, what: str, problems: list) -> tuple | None:
         problems.append(f"{what} is the zero vector")
         return None
     norm = sp.sqrt(nx**2 + ny**2)
-    return sp.simplify(nx / norm), sp.simplify(ny / norm)
+    return simplify(nx / norm), simplify(ny / norm)
 
 
 def on_line(p, through=(0, 0), direction=(1, 0), name: str = "") -> tuple[Holonomic, ...]:

@@ -8,6 +8,7 @@ modules, a closed pipe) runs as a subprocess. Systems are tiny (a 1-DOF oscillat
 from __future__ import annotations
 
 import csv
+import json
 import math
 import subprocess
 import sys
@@ -333,8 +334,10 @@ def test_derive_hamiltonian_modes_check_verify(tmp_path, capsys):
     assert status == 0 and ("\\frac" in out or "\\ddot" in out)
     status, out, _ = cli("hamiltonian", path, "--no-progress", capsys=capsys)
     assert status == 0 and "H =" in out
-    status, out, _ = cli("modes", path, "--about", "x=0", "--param", "m=1", "--param", "k=4", capsys=capsys)
-    assert status == 0 and "2." in out.split("angular frequencies:")[1].splitlines()[0]  # omega = sqrt(k/m)
+    status, out, _ = cli("modes", path, "--about", "x=0", "--param", "m=1", "--param", "k=4", "--json",
+                         capsys=capsys)
+    frequencies = [m["frequency"] for m in json.loads(out)["modes"]]
+    assert status == 0 and frequencies == pytest.approx([2.0], rel=1e-14)  # omega = sqrt(k/m)
     status, out, _ = cli("check", "ex3.2", "--samples", "2", "--seed", "3", "--param", "m=2", "--no-progress",
                          capsys=capsys)
     assert status == 0, out
