@@ -40,7 +40,7 @@ CHILD = textwrap.dedent("""\
                      V=x**2 / 2 + 2 * y**2 + x**2 * y**2 / 10)
     ic = {"x": 1.0, "y": 0.5, "x_dot": 0.0, "y_dot": 0.3}
     kw = json.loads(sys.argv[1])
-    t_end = kw.pop("t_end", 1e9)  # fixed steps: at most 1e9 of them per run (simulate refuses more)
+    t_end = kw.pop("t_end", 1e9)  # runs of up to 1e8 steps: each test raises max_steps (simulate refuses more than it allows)
     sys_.simulate(0.01, ic, {}, **kw)  # compile (and warm) everything first
     print("READY", flush=True)
     try:
@@ -96,7 +96,7 @@ def test_scipy_loop_interrupted_with_partial():
 
 
 def test_python_fixed_step_loop_interrupted_with_partial():
-    _check_child({"method": "gl4", "loop": "scipy", "step": 1e-3, "t_end": 1e5})
+    _check_child({"method": "gl4", "loop": "scipy", "step": 1e-3, "t_end": 1e5, "max_steps": 10**9})
 
 
 def test_run_in_chunks_returns_none_on_ctrl_c_and_keeps_state():
@@ -178,7 +178,7 @@ def test_scipy_interrupt_in_process_keeps_output_times(monkeypatch):
 @pytest.mark.parametrize("options", [
     {"method": "DOP853", "loop": "compiled", "backend": "numba", "rtol": 1e-12, "atol": 1e-12},
     {"method": "RK45", "loop": "compiled", "backend": "numba"},
-    {"method": "gl4", "loop": "compiled", "step": 1e-3, "t_end": 1e5},
+    {"method": "gl4", "loop": "compiled", "step": 1e-3, "t_end": 1e5, "max_steps": 10**9},
     {"method": "DOP853", "loop": "scipy", "backend": "numba"},
 ])
 def test_compiled_loops_interrupted_with_partial(options):
@@ -190,7 +190,7 @@ def test_heyoka_interrupted_with_partial():
     """SIGINT during a heyoka run: the partial trajectory holds the initial point and the state reached (it was
     header-only: the output points of an unfinished chunk were lost)."""
     pytest.importorskip("heyoka")
-    _check_child({"method": "heyoka", "max_step": 0.01, "t_end": 1e6})
+    _check_child({"method": "heyoka", "max_step": 0.01, "t_end": 1e6, "max_steps": 10**9})
 
 
 @pytest.fixture(scope="module")
