@@ -40,7 +40,7 @@ CHILD = textwrap.dedent("""\
                      V=x**2 / 2 + 2 * y**2 + x**2 * y**2 / 10)
     ic = {"x": 1.0, "y": 0.5, "x_dot": 0.0, "y_dot": 0.3}
     kw = json.loads(sys.argv[1])
-    t_end = kw.pop("t_end", 1e9)  # runs of up to 1e8 steps: each test raises max_steps (simulate refuses more than it allows)
+    t_end = kw.pop("t_end", 1e9)  # long fixed-step runs raise max_steps (simulate refuses 1e8 steps by default)
     sys_.simulate(0.01, ic, {}, **kw)  # compile (and warm) everything first
     print("READY", flush=True)
     try:
