@@ -123,29 +123,26 @@ def revolute(p: MaterialPoint, q: MaterialPoint, name: str = "") -> tuple[Holono
     >>> [c.expr for c in revolute(crank.point("P"), rod.point("Q"))]
     [cos(a(t)) + cos(b(t)) - 2, sin(a(t)) + sin(b(t))]
     """
-    problems: list[str] = []
-    joint = f"revolute joint {name!r}" if name else "revolute joint"
-    p = _body_point(p, joint, "first", problems, planar=True)
-    q = _body_point(q, joint, "second", problems, planar=True)
-    _two_bodies(p, q, joint, problems)
-    _raise(problems, joint)
-    name = name or f"revolute {_label(p)}-{_label(q)}"
-    d = p.position - q.position
-    return _closures([("x", d[0]), ("y", d[1])], name)
+    return _coincident(p, q, "revolute", name, planar=True)
 
 
 def spherical(p: MaterialPoint, q: MaterialPoint, name: str = "") -> tuple[Holonomic, ...]:
     r"""A spherical (ball) joint: points ``p`` and ``q`` of two rigid bodies coincide,
     :math:`\mathbf r_p - \mathbf r_q = 0` (x, y and z; a component zero by construction is left out)."""
+    return _coincident(p, q, "spherical", name, planar=False)
+
+
+def _coincident(p, q, kind: str, name: str, *, planar: bool) -> tuple[Holonomic, ...]:
+    """Points ``p`` and ``q`` of two bodies coincide: x and y (``planar``), or x, y and z."""
     problems: list[str] = []
-    joint = f"spherical joint {name!r}" if name else "spherical joint"
-    p = _body_point(p, joint, "first", problems, planar=False)
-    q = _body_point(q, joint, "second", problems, planar=False)
+    joint = f"{kind} joint {name!r}" if name else f"{kind} joint"
+    p = _body_point(p, joint, "first", problems, planar=planar)
+    q = _body_point(q, joint, "second", problems, planar=planar)
     _two_bodies(p, q, joint, problems)
     _raise(problems, joint)
-    name = name or f"spherical {_label(p)}-{_label(q)}"
+    name = name or f"{kind} {_label(p)}-{_label(q)}"
     d = p.position - q.position
-    return _closures([(_AXES[i], d[i]) for i in range(3)], name)
+    return _closures([(_AXES[i], d[i]) for i in range(2 if planar else 3)], name)
 
 
 def pin(p, at=(0, 0), name: str = "") -> tuple[Holonomic, ...]:
