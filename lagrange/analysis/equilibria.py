@@ -20,7 +20,7 @@ import sympy as sp
 
 from ..conventions import t
 from ..errors import AnalysisError, LagrangeError
-from ..model.coordinates import coordinate_name, position_symbol, to_functions
+from ..model.coordinates import canonical_key, coordinate_name, position_symbol, to_functions
 from ..safe_sympify import sympify as _sympify
 from ..simplification import solve
 
@@ -115,8 +115,9 @@ def equilibria(system, params: Mapping | None = None, guess: Mapping | None = No
     x0 = np.zeros(len(unknowns))
     if guess:
         for k, v in guess.items():
+            key = canonical_key(k, system.coordinates)  # dynamicsymbols
             for i, c in enumerate(system.coordinates):
-                if k in (c, coordinate_name(c), position_symbol(c)):
+                if key in (c, coordinate_name(c), position_symbol(c)):
                     x0[i] = float(v)
                     break
             else:

@@ -39,7 +39,7 @@ import sympy as sp
 
 from ..conventions import t
 from ..errors import AnalysisError, LagrangeError
-from ..model.coordinates import coordinate_name, position_symbol, velocity_symbol
+from ..model.coordinates import canonical_key, coordinate_name, position_symbol, velocity_symbol
 from ..records import record
 from ..safe_sympify import sympify as _sympify
 from ..simplification import factor, is_zero, simplify, solve
@@ -237,11 +237,12 @@ def _resolve(system, names, what: str, velocity: bool) -> list[int]:
     """Indices of coordinates given by object or name (velocities too when ``velocity``)."""
     idx = []
     for k in names:
+        key = canonical_key(k, system.coordinates)  # dynamicsymbols and their derivatives
         for i, q in enumerate(system.coordinates):
             keys = {q, coordinate_name(q), position_symbol(q)}
             if velocity:
                 keys |= {q.diff(t), velocity_symbol(q), velocity_symbol(q).name}
-            if k in keys:
+            if key in keys:
                 idx.append(i)
                 break
         else:

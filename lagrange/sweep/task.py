@@ -27,11 +27,11 @@ import numpy as np
 from ..conventions import VELOCITY_SUFFIX
 from ..errors import SweepError
 from ..integrate.run import initial_state
-from ..model.coordinates import coordinate_name
+from ..model.coordinates import canonical_key, coordinate_name, is_coordinate
 from .pickling import dumps_task
 
-__all__ = ["SimulationTask", "InputExpressions", "execute", "dumps_task", "state_names", "scalar_columns",
-           "release_task", "KEEP_TASKS"]
+__all__ = ["SimulationTask", "InputExpressions", "execute", "dumps_task", "state_name", "state_names",
+           "scalar_columns", "release_task", "KEEP_TASKS"]
 
 Summary = Callable[[Any], Any]
 
@@ -215,19 +215,23 @@ def _check_option_names(options: Mapping) -> None:
                          f"of lagrange.simulate ({', '.join(known)}); the system's inputs go in `inputs=`")
 
 
+def state_name(system, key):
+    """The name of a key given by object: ``"q"`` for a coordinate ``q(t)`` (or sympy's ``dynamicsymbols('q')``),
+    ``"q_dot"`` for its velocity, a symbol's name; a string or anything else as it is."""
+    key = canonical_key(key, system.coordinates)
+    if is_coordinate(key):
+        return coordinate_name(key)
+    if getattr(key, "derivative_count", 0) == 1 and is_coordinate(key.expr):
+        return coordinate_name(key.expr) + VELOCITY_SUFFIX
+    return key.name if isinstance(getattr(key, "name", None), str) else str(key)
+
+
 def _by_name(system, values: Mapping) -> dict[str, float]:
     if not values:
         return {}
     names = state_names(system)
     n = len(names) // 2
-    out = {}
-    for key, v in values.items():
-        if isinstance(key, str):
-            out[key] = float(v)
-        elif getattr(key, "derivative_count", 0) == 1:
-            out[coordinate_name(key.expr) + VELOCITY_SUFFIX] = float(v)
-        else:
-            out[coordinate_name(key)] = float(v)
+    out = {state_name(system, key): float(v) for key, v in values.items()}
     unknown = [k for k in out if k not in names]
     if unknown:
         raise SweepError(f"setup returned unknown initial value(s) {', '.join(unknown)} "
