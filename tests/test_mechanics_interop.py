@@ -359,3 +359,75 @@ def test_mechanics_system_built_from_joints():
     for angle, rate in ((0.3, 0.7), (-2.0, 1.5)):
         expected = _kane_accelerations(msys, [q], [u], params, [angle], [rate], 0.0)
         _close(_lagrange_accelerations(system, params, np.array([angle]), np.array([rate])), expected)
+
+
+# ------------------------------------------------------------------- dynamicsymbols as keys everywhere
+
+def _two_springs(coords):
+    q1, q2 = coords
+    d = q1.args[0]
+    m, k = lg.parameters("m k")
+    F = lg.inputs("F")
+    s = lg.System([q1, q2], T=m * (q1.diff(d) ** 2 + q2.diff(d) ** 2) / 2, V=k * (q1**2 + q2**2 + q1 * q2) / 2,
+                  forces={q1: F})
+    return s, {m: 1.0, k: 2.0}
+
+
+def test_dynamicsymbols_are_keys_wherever_a_coordinate_is():
+    """Initial values, sol[q], about=, plots, sweeps and inputs keyed by sympy's dynamicsymbols (and their
+    .diff(), dynamicsymbols('q', 1), second derivatives) give what the same keys by name give."""
+    q1, q2 = me.dynamicsymbols("q1 q2")
+    q1d, q2d = me.dynamicsymbols("q1 q2", 1)
+    F = me.dynamicsymbols("F")
+    s, p = _two_springs((q1, q2))
+    named = s.simulate((0, 1), {"q1": 0.1, "q2": 0, "q1_dot": 0, "q2_dot": 0.2}, p, inputs={"F": 0.3})
+    for initial in ({q1: 0.1, q2: 0, q1d: 0, q2d: 0.2}, {q1: 0.1, q2: 0, q1.diff(): 0, q2.diff(T_S): 0.2}):
+        sol = s.simulate((0, 1), initial, p, inputs={F: 0.3})
+        np.testing.assert_array_equal(sol.y, named.y)
+    np.testing.assert_array_equal(sol[q1], named["q1"])
+    np.testing.assert_array_equal(sol[q2d], named["q2_dot"])
+    np.testing.assert_array_equal(sol[q1.diff(T_S, 2)], named["q1_ddot"])
+    np.testing.assert_array_equal(sol[F], named["F"])
+    lin, lin_named = lg.linearize(s, {q1: 0.2, q2d: 0.1}, params=p), lg.linearize(s, {"q1": 0.2, "q2_dot": 0.1}, params=p)
+    np.testing.assert_array_equal(np.asarray(lin.A, dtype=float), np.asarray(lin_named.A, dtype=float))
+    fig = sol.plot(coordinates=[q2])
+    assert [ax.get_ylabel() for ax in fig.axes] == [ax.get_ylabel() for ax in named.plot(coordinates=["q2"]).axes]
+    # a system declared with lagrange's (real) coordinates takes sympy's keys of the same names too
+    ours, p2 = _two_springs(lg.coordinates("q1 q2"))
+    other = ours.simulate((0, 1), {q1: 0.1, q2: 0, q1d: 0, q2d: 0.2}, p2, inputs={F: 0.3})
+    np.testing.assert_allclose(other.y, named.y, rtol=1e-12, atol=1e-14)
+    np.testing.assert_array_equal(other[q1], other["q1"])
+    pytest.importorskip("pandas")
+    table = lg.sweep(s, {q1: [0.1, 0.2]}, t_end=0.5, initial={q1: 0, q2: 0, q1d: 0, q2d: 0.2}, params=p,
+                     inputs={F: 0.3}, workers=0, progress=False)
+    by_name = lg.sweep(s, {"q1": [0.1, 0.2]}, t_end=0.5, initial={"q1": 0, "q2": 0, "q1_dot": 0, "q2_dot": 0.2},
+                       params=p,
+                       inputs={"F": 0.3}, workers=0, progress=False)
+    np.testing.assert_array_equal(table["final_q1"], by_name["final_q1"])
+
+
+def test_keys_that_name_nothing_are_still_refused():
+    q1, q2, z = me.dynamicsymbols("q1 q2 z")
+    s, p = _two_springs((q1, q2))
+    with pytest.raises(lg.InitialConditionError, match=r"Derivative\(z\(t\), t\) is not a coordinate") as err:
+        s.simulate((0, 1), {q1: 0, q2: 0, q1.diff(): 0, z.diff(): 0}, p, inputs={"F": 0})
+    assert "q1(t) is not" not in str(err.value) and "missing initial value(s) for q2_dot" in str(err.value)
+    sol = s.simulate((0, 1), {q1: 0, q2: 0, q1.diff(): 0, q2.diff(): 0}, p, inputs={"F": 0})
+    with pytest.raises(KeyError, match="z"):
+        sol[z]
+    with pytest.raises(lg.AnalysisError, match=r"unknown name\(s\) in the reference state: z"):
+        lg.linearize(s, {z: 1}, params=p)
+    with pytest.raises(lg.ParameterError, match=r"z\(t\) is not an input"):
+        s.simulate((0, 1), {q1: 0, q2: 0, q1.diff(): 0, q2.diff(): 0}, p, inputs={z: 0})
+
+
+def test_a_time_function_in_the_forces_is_refused_with_inputs_as_the_fix():
+    x = lg.coordinates("x")
+    m = lg.parameters("m")
+    F = me.dynamicsymbols("F")
+    with pytest.raises(lg.DeclarationError, match=r"lagrange.inputs\('F'\) in place of F\(t\)") as err:
+        lg.System([x], T=m * x.diff(lg.t) ** 2 / 2, forces={x: F})
+    assert isinstance(err.value, ValueError)
+    with pytest.raises(lg.DeclarationError, match="prescribe its motion") as err:  # in T an input is no fix
+        lg.System([x], T=m * x.diff(lg.t) ** 2 / 2 + F * x)
+    assert "lagrange.inputs" not in str(err.value)
