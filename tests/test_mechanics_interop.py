@@ -431,3 +431,149 @@ def test_a_time_function_in_the_forces_is_refused_with_inputs_as_the_fix():
     with pytest.raises(lg.DeclarationError, match="prescribe its motion") as err:  # in T an input is no fix
         lg.System([x], T=m * x.diff(lg.t) ** 2 / 2 + F * x)
     assert "lagrange.inputs" not in str(err.value)
+
+
+# ------------------------------------------------------------- sympy's own example models, end to end
+
+from sympy.physics.mechanics.models import multi_mass_spring_damper, n_link_pendulum_on_cart  # noqa: E402
+
+
+def _numbers(symbols, rng):
+    return {s: float(v) for s, v in zip(symbols, rng.uniform(0.5, 1.5, len(symbols)))}
+
+
+def _ours_at(system, matrix, q, qd, params, inputs):
+    """A symbolic matrix of ``system`` (lagrange's time) at a state, by name for parameters and inputs."""
+    at = {c.diff(lg.t): v for c, v in zip(system.coordinates, qd)} | dict(zip(system.coordinates, q))
+    names = {s.name: v for s, v in params.items()} | {f.func.__name__: v for f, v in inputs.items()}
+    at |= {s: names[s.name] for s in matrix.free_symbols if s.name in names}
+    return np.array(matrix.xreplace(at).evalf(), dtype=float)
+
+
+def _specifieds(kane):
+    return sorted(me.find_dynamicsymbols(kane.forcing, [*kane.q, *kane.u]), key=str)
+
+
+@pytest.mark.parametrize("build", [lambda: multi_mass_spring_damper(2, True, True),
+                                   lambda: n_link_pendulum_on_cart(2, True, True)],
+                         ids=["multi_mass_spring_damper", "n_link_pendulum_on_cart"])
+def test_sympy_models_with_specified_forces_both_ways(build):
+    """sympy's models with specified (time-varying) forces: the specifieds become lagrange inputs, and the mass
+    matrix and forcing equal Kane's (u = q̇ in these models) at random states, to 1e-12; back through
+    to_mechanics the inputs are sympy specifieds again, with the same equations."""
+    kane = build()
+    system = from_mechanics(kane)
+    specs = _specifieds(kane)
+    assert [u.name for u in system.inputs] == sorted(f.func.__name__ for f in specs) and specs
+    params = _numbers(sorted(kane.forcing.free_symbols | kane.mass_matrix.free_symbols - {T_S}, key=str),
+                      np.random.default_rng(5))
+    back = system.to_mechanics()
+    assert sorted(me.find_dynamicsymbols(back.forcing, [*back.q, *back._qdots]), key=str) == specs
+    rng = np.random.default_rng(6)
+    n = len(kane.q)
+    for _ in range(3):
+        q, qd, f = rng.uniform(-1, 1, n), rng.uniform(-1, 1, n), dict(zip(specs, rng.uniform(-1, 1, len(specs))))
+        theirs = params | dict(zip(kane.q, q)) | dict(zip(kane.u, qd)) | f
+        M_k = np.array(kane.mass_matrix.xreplace(theirs).evalf(), dtype=float)
+        f_k = np.array(kane.forcing.xreplace(theirs).evalf(), dtype=float).ravel()
+        _close(_ours_at(system, system.mass_matrix, q, qd, params, f), M_k, 1e-12)
+        _close(_ours_at(system, system.forcing, q, qd, params, f).ravel(), f_k, 1e-12)
+        sym = params | {c.diff(T_S): v for c, v in zip(back.q, qd)} | dict(zip(back.q, q)) | f
+        _close(_solve_full(back, sym)[n:], np.linalg.solve(M_k, f_k), 1e-12)
+
+
+def test_sympy_linearization_of_the_cart_pole_model_both_ways():
+    """sympy's n_link_pendulum_on_cart(1): sympy's linearize (A, B) about the upright state equals lagrange's
+    linearize, and sympy's linearize of to_mechanics' LagrangesMethod has the same non-empty B."""
+    kane = n_link_pendulum_on_cart(1, cart_force=True)
+    system = from_mechanics(kane)
+    (F,) = _specifieds(kane)
+    params = _numbers(sorted(kane.forcing.free_symbols | kane.mass_matrix.free_symbols - {T_S}, key=str),
+                      np.random.default_rng(8))
+    op = dict.fromkeys([*kane.q, *kane.u, F], 0)
+    A_s, B_s = kane.linearize(A_and_B=True, op_point=op, new_method=True)[:2]
+    A_s, B_s = (np.array(X.xreplace(params).evalf(), dtype=float) for X in (A_s, B_s))
+    lin = lg.linearize(system, dict.fromkeys(kane.q, 0), params={s.name: v for s, v in params.items()})
+    _close(np.asarray(lin.A, dtype=float), A_s, 1e-12)
+    _close(np.asarray(lin.B, dtype=float), B_s, 1e-12)
+    assert np.abs(B_s).max() > 0.1
+    lm = system.to_mechanics()
+    qd = [c.diff(T_S) for c in lm.q]
+    A_l, B_l, r = lm.linearize(q_ind=list(lm.q), qd_ind=qd, A_and_B=True, op_point=dict.fromkeys([*lm.q, *qd, F], 0))
+    assert list(r) == [F]
+    _close(np.array(A_l.xreplace(params).evalf(), dtype=float), A_s, 1e-12)
+    _close(np.array(B_l.xreplace(params).evalf(), dtype=float), B_s, 1e-12)
+
+
+def _top_with_body_rates():
+    """A heavy top on a fixed point (3-1-3 body angles); its speeds are the body-frame angular velocity
+    components, an invertible linear map of the angle rates: holonomic."""
+    q1, q2, q3, u1, u2, u3 = me.dynamicsymbols("q1 q2 q3 u1 u2 u3")
+    m, g, r, A, C = sp.symbols("m g r A C", positive=True)
+    N = me.ReferenceFrame("N")
+    R = N.orientnew("R", "Body", [q1, q2, q3], "313")
+    w_qd = R.ang_vel_in(N)
+    R.set_ang_vel(N, u1 * R.x + u2 * R.y + u3 * R.z)
+    O = me.Point("O")
+    O.set_vel(N, 0)
+    G = O.locatenew("G", r * R.z)
+    G.v2pt_theory(O, N, R)
+    top = me.RigidBody("top", G, R, m, (me.inertia(R, A, A, C), G))
+    kane = me.KanesMethod(N, [q1, q2, q3], [u1, u2, u3], kd_eqs=[me.dot(R.ang_vel_in(N) - w_qd, e) for e in R])
+    kane.kanes_equations([top], [(G, -m * g * N.z)])
+    return kane, {m: 1.1, g: 9.81, r: 0.3, A: 0.05, C: 0.08}
+
+
+def test_body_frame_speeds_are_holonomic():
+    """Kane's top with body-frame rates is converted (not refused as non-holonomic); with q̇ from Kane's
+    kinematics, lagrange's q̈ gives u̇ = ∂u/∂q̇ q̈ + ∂u/∂q q̇ equal to Kane's u̇ at random states."""
+    kane, params = _top_with_body_rates()
+    system = from_mechanics(kane)
+    q, u = list(kane.q), list(kane.u)
+    qd = [c.diff(T_S) for c in q]
+    solved = sp.solve([qdot - expr for qdot, expr in kane.kindiffdict().items()], u, dict=True)[0]
+    U = sp.Matrix([solved[s] for s in u])  # the speeds in terms of q and q̇
+    rng = np.random.default_rng(9)
+    for _ in range(3):
+        qv, uv = rng.uniform(0.3, 1.2, 3), rng.uniform(-2, 2, 3)
+        full = _solve_full(kane, params | dict(zip(q, qv)) | dict(zip(u, uv)))
+        qdv, udot = full[:3], full[3:]
+        qdd = _lagrange_accelerations(system, params, qv, qdv)
+        at = dict(zip(qd, qdv)) | dict(zip(q, qv))
+        Jv = np.array(U.jacobian(qd).xreplace(at).evalf(), dtype=float)
+        Jq = np.array(U.jacobian(q).xreplace(at).evalf(), dtype=float)
+        _close(Jv @ qdd + Jq @ qdv, udot, 1e-10)
+
+
+def test_velocity_constraints_implied_by_configuration_constraints_are_dropped():
+    """sympy's non-minimal Kane pendulum (test_linearize): the velocity constraint is the time derivative of the
+    length constraint, so it is dropped; accelerations agree with Kane's and a run keeps the length."""
+    q1, q2 = me.dynamicsymbols("q1:3")
+    u1, u2 = me.dynamicsymbols("u1:3")
+    L, m, g = sp.symbols("L m g")
+    N = me.ReferenceFrame("N")
+    pN = me.Point("N*")
+    pN.set_vel(N, 0)
+    A = N.orientnew("A", "axis", [sp.atan(q2 / q1), N.z])
+    P = pN.locatenew("P1", q1 * N.x + q2 * N.y)
+    kde = sp.Matrix([q1.diff(T_S) - u1, q2.diff(T_S) - u2])
+    P.set_vel(N, P.pos_from(pN).dt(N).subs(sp.solve(kde, [q1.diff(T_S), q2.diff(T_S)])))
+    f_v = sp.Matrix([P.vel(N).express(A).dot(A.x)]).applyfunc(sp.simplify)
+    kane = me.KanesMethod(N, q_ind=[q2], u_ind=[u2], q_dependent=[q1], u_dependent=[u1],
+                          configuration_constraints=[P.pos_from(pN).magnitude() - L], velocity_constraints=f_v,
+                          acceleration_constraints=f_v.diff(T_S), kd_eqs=kde)
+    kane.kanes_equations([me.Particle("pP", P, m)], [(P, m * g * N.x)])
+    system = from_mechanics(kane)
+    assert [c.kind for c in system.constraints] == ["holonomic"]
+    params = {L: 0.8, m: 1.3, g: 9.81}
+    for angle, rate in ((0.4, 1.1), (-1.2, 0.5)):
+        qv = 0.8 * np.array([np.cos(angle), np.sin(angle)])
+        qdv = 0.8 * rate * np.array([-np.sin(angle), np.cos(angle)])
+        full = _solve_full(kane, params | dict(zip([q2, q1], qv[::-1])) | dict(zip([u2, u1], qdv[::-1])))
+        udot = dict(zip(kane.u, full[2:]))
+        assert [c.func.__name__ for c in system.coordinates] == ["q2", "q1"]  # Kane's order: independent first
+        _close(_lagrange_accelerations(system, params, qv[::-1], qdv[::-1]), [udot[u2], udot[u1]], 1e-10)
+    sol = system.simulate((0, 2), {q1: 0.8 * np.cos(0.4), q2: 0.8 * np.sin(0.4), q1.diff(): -0.8 * np.sin(0.4),
+                                   q2.diff(): 0.8 * np.cos(0.4)}, {s.name: v for s, v in params.items()},
+                          rtol=1e-10, atol=1e-12)
+    assert np.max(np.abs(np.hypot(sol[q1], sol[q2]) - 0.8)) < 1e-7
