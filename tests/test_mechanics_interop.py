@@ -388,7 +388,8 @@ def test_dynamicsymbols_are_keys_wherever_a_coordinate_is():
     np.testing.assert_array_equal(sol[q2d], named["q2_dot"])
     np.testing.assert_array_equal(sol[q1.diff(T_S, 2)], named["q1_ddot"])
     np.testing.assert_array_equal(sol[F], named["F"])
-    lin, lin_named = lg.linearize(s, {q1: 0.2, q2d: 0.1}, params=p), lg.linearize(s, {"q1": 0.2, "q2_dot": 0.1}, params=p)
+    lin = lg.linearize(s, {q1: 0.2, q2d: 0.1}, params=p)
+    lin_named = lg.linearize(s, {"q1": 0.2, "q2_dot": 0.1}, params=p)
     np.testing.assert_array_equal(np.asarray(lin.A, dtype=float), np.asarray(lin_named.A, dtype=float))
     fig = sol.plot(coordinates=[q2])
     assert [ax.get_ylabel() for ax in fig.axes] == [ax.get_ylabel() for ax in named.plot(coordinates=["q2"]).axes]
