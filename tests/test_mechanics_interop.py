@@ -407,6 +407,20 @@ def test_dynamicsymbols_are_keys_wherever_a_coordinate_is():
     np.testing.assert_array_equal(table["final_q1"], by_name["final_q1"])
 
 
+def test_gauss_check_takes_dynamicsymbols_for_its_state_and_ranges():
+    """Gauss' check: an initial state and sampling ranges keyed by dynamicsymbols (a velocity range too, which a
+    name-only lookup would silently ignore)."""
+    q1, q2 = me.dynamicsymbols("q1 q2")
+    m, k = lg.parameters("m k")
+    s = lg.System([q1, q2], bodies=[lg.Particle(m, (q1, q2))], V=k * (q1**2 + q2**2 + q1 * q2) / 2)
+    res = lg.check_gauss(s, {m: 1, k: 2}, ranges={q1.diff(): (5, 6), q2: (3, 4)}, diagnostics=False, samples=3,
+                         initial={q1: 0.1, q2: 3.5, q1.diff(): 5.5, q2.diff(): 0})
+    assert res.ok
+    ys = np.array([sample.y for sample in res.samples])
+    assert np.all((ys[:, 1] >= 3) & (ys[:, 1] <= 4)) and np.all((ys[:, 2] >= 5) & (ys[:, 2] <= 6))
+    np.testing.assert_array_equal(ys[0], [0.1, 3.5, 5.5, 0])
+
+
 def test_keys_that_name_nothing_are_still_refused():
     q1, q2, z = me.dynamicsymbols("q1 q2 z")
     s, p = _two_springs((q1, q2))

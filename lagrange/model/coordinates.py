@@ -36,6 +36,7 @@ __all__ = [
     "normalize_time",
     "canonical_key",
     "canonical_keys",
+    "key_name",
 ]
 
 #: The time symbol of ``sympy.physics.mechanics.dynamicsymbols`` (``Symbol('t')``, no assumptions).
@@ -176,6 +177,24 @@ def canonical_keys(mapping, coordinates: Sequence = (), inputs: Sequence = ()) -
 
     Two keys that name the same thing keep the last value, as in any dict."""
     return {canonical_key(k, coordinates, inputs): v for k, v in (mapping or {}).items()}
+
+
+def key_name(key, coordinates: Sequence = ()) -> str:
+    """The name by which a key is looked up in tables keyed by names (sweeps, sampling ranges): ``"q"`` for a
+    coordinate ``q(t)`` (or sympy's ``dynamicsymbols('q')``), ``"q_dot"`` for its velocity, a symbol's name; a
+    string as it is, anything else as its text.
+
+    >>> from sympy.physics.mechanics import dynamicsymbols
+    >>> key_name(dynamicsymbols("x", 1)), key_name("x_dot")
+    ('x_dot', 'x_dot')
+    """
+    key = canonical_key(key, coordinates)
+    if is_coordinate(key):
+        return coordinate_name(key)
+    if isinstance(key, sp.Derivative) and is_coordinate(key.expr) and key.derivative_count == 1:
+        return coordinate_name(key.expr) + VELOCITY_SUFFIX
+    name = getattr(key, "name", None)
+    return name if isinstance(name, str) else str(key)
 
 
 def normalize_fields(obj) -> None:

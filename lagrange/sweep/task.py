@@ -27,7 +27,7 @@ import numpy as np
 from ..conventions import VELOCITY_SUFFIX
 from ..errors import SweepError
 from ..integrate.run import initial_state
-from ..model.coordinates import canonical_key, coordinate_name, is_coordinate
+from ..model.coordinates import coordinate_name, key_name
 from .pickling import dumps_task
 
 __all__ = ["SimulationTask", "InputExpressions", "execute", "dumps_task", "state_name", "state_names",
@@ -215,15 +215,9 @@ def _check_option_names(options: Mapping) -> None:
                          f"of lagrange.simulate ({', '.join(known)}); the system's inputs go in `inputs=`")
 
 
-def state_name(system, key):
-    """The name of a key given by object: ``"q"`` for a coordinate ``q(t)`` (or sympy's ``dynamicsymbols('q')``),
-    ``"q_dot"`` for its velocity, a symbol's name; a string or anything else as it is."""
-    key = canonical_key(key, system.coordinates)
-    if is_coordinate(key):
-        return coordinate_name(key)
-    if getattr(key, "derivative_count", 0) == 1 and is_coordinate(key.expr):
-        return coordinate_name(key.expr) + VELOCITY_SUFFIX
-    return key.name if isinstance(getattr(key, "name", None), str) else str(key)
+def state_name(system, key) -> str:
+    """The name of a key given by object (:func:`~lagrange.model.coordinates.key_name`)."""
+    return key_name(key, system.coordinates)
 
 
 def _by_name(system, values: Mapping) -> dict[str, float]:
