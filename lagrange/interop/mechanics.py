@@ -18,13 +18,26 @@ energy when nothing moves with time.
 Kane's models (``KanesMethod``, mechanics ``System``) are converted through their bodies and loads:
 ``T = Σ body.kinetic_energy(frame)``, ``V = Σ body.potential_energy``, each load gives the generalized
 force ``Q_r = F · ∂v_P/∂q̇_r`` (``τ · ∂ω_B/∂q̇_r`` for a torque), after the generalized speeds are
-replaced by their expressions in q and q̇ from the kinematic differential equations. Configuration
-constraints become :class:`~lagrange.Holonomic` and velocity constraints :class:`~lagrange.Nonholonomic`.
-This is only sound when every velocity in the model is the time derivative of a position in the
-coordinates, so :func:`from_mechanics` checks it: a model that builds a non-holonomic constraint into its
-kinematics (sympy's rolling disc sets the contact point's velocity to zero instead of declaring the
-contact coordinates and the rolling constraints) is refused, as are auxiliary speeds. Its Kane's equations
-are right, but no Lagrangian T(q, q̇) has them.
+replaced by their expressions in q and q̇ from the kinematic differential equations (the speeds may be any
+invertible linear map of q̇, body-frame angular velocity components for instance). Configuration
+constraints become :class:`~lagrange.Holonomic` and velocity constraints :class:`~lagrange.Nonholonomic`,
+except the velocity constraints that are combinations of the time derivatives of the configuration
+constraints (Kane's models list them again to choose the dependent speeds): those are dropped, as they
+would be redundant rows. This is only sound when every velocity in the model is the time derivative of a
+position in the coordinates, so :func:`from_mechanics` checks it: a model that builds a non-holonomic
+constraint into its kinematics (sympy's rolling disc sets the contact point's velocity to zero instead of
+declaring the contact coordinates and the rolling constraints) is refused, as are auxiliary speeds. Its
+Kane's equations are right, but no Lagrangian T(q, q̇) has them. The kinematic residues of these checks
+(and the span test of the velocity constraints) are evaluated at random points in double precision, to
+``1e-9`` of the size of their terms: with body-frame speeds they are long trigonometric sums that cancel,
+too long to expand or simplify.
+
+Specified quantities. sympy's specifieds (functions of time in the loads that are neither coordinates nor
+speeds, e.g. the cart force ``dynamicsymbols('F')`` of ``n_link_pendulum_on_cart``) become lagrange inputs
+of the same name (:func:`lagrange.inputs`), whose values are given at simulate time; the other way,
+:func:`to_mechanics` turns every input back into a specified ``dynamicsymbols(name)``, so sympy's
+``linearize`` finds it and returns its column of B. A load with the time derivative of a specified is
+refused (an input has none).
 
 The other way, lagrange's non-potential generalized forces ``F_q + ∂P/∂q̇ − ∂D/∂q̇`` reach
 ``LagrangesMethod`` as a force ``F_q`` along ``N.x`` at an auxiliary point whose velocity is ``q̇_r N.x``
@@ -65,6 +78,7 @@ def from_mechanics(obj, coordinates: Sequence | None = None, *, name: str = "", 
         For a Lagrangian, ``coordinates`` must be given. A ``LagrangesMethod`` brings its Lagrangian,
         coordinates, loads (``forcelist`` with its ``frame``) and holonomic and non-holonomic constraints; Kane's
         models their bodies, loads, kinematic differential equations and constraints (see the module notes).
+        Specifieds in the loads become inputs of the same names.
     coordinates : sequence of dynamicsymbols (or lagrange coordinates), only with a Lagrangian
     name : str, optional
     **system_options
@@ -393,7 +407,8 @@ def to_mechanics(system):
     (see the module notes); holonomic constraints ``φ = 0`` go to ``hol_coneqs`` and non-holonomic ones
     ``A q̇ + b = 0`` to ``nonhol_coneqs``. ``form_lagranges_equations()`` has been called, so
     ``mass_matrix_full``, ``forcing_full`` and ``rhs()`` are ready. The coordinates are
-    ``dynamicsymbols`` with the names of the system's coordinates.
+    ``dynamicsymbols`` with the names of the system's coordinates, and each input (:func:`lagrange.inputs`) is
+    the specified ``dynamicsymbols(name)``, so ``linearize(..., A_and_B=True)`` gives its column of B.
 
     Raises
     ------
