@@ -592,3 +592,34 @@ def test_velocity_constraints_implied_by_configuration_constraints_are_dropped()
                                    q2.diff(): 0.8 * np.cos(0.4)}, {s.name: v for s, v in params.items()},
                           rtol=1e-10, atol=1e-12)
     assert np.max(np.abs(np.hypot(sol[q1], sol[q2]) - 0.8)) < 1e-7
+
+
+def test_only_velocity_constraints_implied_by_configuration_ones_are_dropped():
+    """Both sides of the span test: derivatives of φ = x − y² (times any function of q) are implied; a rolling-
+    like row and a row with the wrong time term are not."""
+    from lagrange.interop.mechanics import _implied_by_configuration
+
+    x, y, z = me.dynamicsymbols("x y z")
+    a = sp.Symbol("a")
+    xd, yd, zd = (c.diff(T_S) for c in (x, y, z))
+    rows = [xd - 2 * y * yd, sp.cos(z) * (xd - 2 * y * yd) * a, xd - zd, xd - 2 * y * yd + a, zd - sp.sin(x) * yd]
+    assert _implied_by_configuration(rows, [x - y**2], [x, y, z], [xd, yd, zd]) == [True, True, False, False, False]
+    moving = [x - a * T_S]  # a moving constraint: the time term belongs to the derivative
+    assert _implied_by_configuration([3 * (xd - a), xd], moving, [x, y, z], [xd, yd, zd]) == [True, False]
+
+
+def test_a_load_with_the_rate_of_a_specified_is_refused():
+    q = me.dynamicsymbols("q")
+    F = me.dynamicsymbols("F")
+    N = me.ReferenceFrame("N")
+    P = me.Point("P")
+    P.set_vel(N, q.diff() * N.x)
+    lm = me.LagrangesMethod(q.diff() ** 2 / 2, [q], forcelist=[(P, F.diff() * N.x)], frame=N)
+    with pytest.raises(lg.DeclarationError, match=r"derivative of the specified F\(t\)") as err:
+        from_mechanics(lm)
+    assert isinstance(err.value, ValueError)
+    lm = me.LagrangesMethod(q.diff() ** 2 / 2, [q], forcelist=[(P, F * N.x)], frame=N)
+    system = from_mechanics(lm)
+    assert [u.name for u in system.inputs] == ["F"]
+    sol = system.simulate((0, 1), {q: 0, q.diff(): 0}, {}, inputs={F: 2.0}, rtol=1e-10, atol=1e-12)
+    assert abs(sol[q][-1] - 1.0) < 1e-8  # q̈ = F: q(1) = F/2
