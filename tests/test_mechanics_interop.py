@@ -623,3 +623,36 @@ def test_a_load_with_the_rate_of_a_specified_is_refused():
     assert [u.name for u in system.inputs] == ["F"]
     sol = system.simulate((0, 1), {q: 0, q.diff(): 0}, {}, inputs={F: 2.0}, rtol=1e-10, atol=1e-12)
     assert abs(sol[q][-1] - 1.0) < 1e-8  # q̈ = F: q(1) = F/2
+
+
+def test_sympy_double_pendulum_lagranges_method():
+    """sympy's double pendulum (test_lagrange.test_dub_pen) through from_mechanics and back: accelerations equal
+    sympy's at random states."""
+    q1, q2 = me.dynamicsymbols("q1 q2")
+    q1d, q2d = me.dynamicsymbols("q1 q2", 1)
+    m, l, g = sp.symbols("m l g")
+    N = me.ReferenceFrame("N")
+    A = N.orientnew("A", "Axis", [q1, N.z])
+    B = N.orientnew("B", "Axis", [q2, N.z])
+    A.set_ang_vel(N, q1d * A.z)
+    B.set_ang_vel(N, q2d * A.z)
+    O = me.Point("O")
+    P = O.locatenew("P", l * A.x)
+    R = P.locatenew("R", l * B.x)
+    O.set_vel(N, 0)
+    P.v2pt_theory(O, N, A)
+    R.v2pt_theory(P, N, B)
+    ParP, ParR = me.Particle("ParP", P, m), me.Particle("ParR", R, m)
+    ParP.potential_energy = -m * g * l * sp.cos(q1)
+    ParR.potential_energy = -m * g * l * sp.cos(q1) - m * g * l * sp.cos(q2)
+    lm = me.LagrangesMethod(me.Lagrangian(N, ParP, ParR), [q1, q2])
+    lm.form_lagranges_equations()
+    system = from_mechanics(lm)
+    back = system.to_mechanics()
+    params = {m: 1.3, l: 0.7, g: 9.81}
+    rng = np.random.default_rng(12)
+    for _ in range(3):
+        q, qd = rng.uniform(-2, 2, 2), rng.uniform(-2, 2, 2)
+        expected = _sympy_lagrange_accelerations(lm, params, [q1, q2], q, qd)
+        _close(_lagrange_accelerations(system, params, q, qd), expected, 1e-12)
+        _close(_sympy_lagrange_accelerations(back, params, list(back.q), q, qd), expected, 1e-12)
