@@ -508,7 +508,7 @@ def test_sympy_linearization_of_the_cart_pole_model_both_ways():
     op = dict.fromkeys([*kane.q, *kane.u, F], 0)
     A_s, B_s = kane.linearize(A_and_B=True, op_point=op, new_method=True)[:2]
     A_s, B_s = (np.array(X.xreplace(params).evalf(), dtype=float) for X in (A_s, B_s))
-    lin = lg.linearize(system, dict.fromkeys(kane.q, 0), params={s.name: v for s, v in params.items()})
+    lin = lg.linearize(system, dict.fromkeys(kane.q, 0), params={s.name: v for s, v in params.items()}, inputs=[F])
     _close(np.asarray(lin.A, dtype=float), A_s, 1e-12)
     _close(np.asarray(lin.B, dtype=float), B_s, 1e-12)
     assert np.abs(B_s).max() > 0.1

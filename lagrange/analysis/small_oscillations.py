@@ -318,7 +318,8 @@ def linearize(system, about: Mapping | None = None, velocities: Mapping | None =
     ((x(t),), g/l)
     """
     eqs = system.derived
-    inputs = tuple(getattr(eqs, "inputs", ()) if inputs is None else inputs)
+    declared = tuple(getattr(eqs, "inputs", ()))
+    inputs = declared if inputs is None else tuple(canonical_key(u, (), declared) for u in inputs)  # specifieds
     bad = [u for u in inputs if not isinstance(u, sp.Symbol)]
     if bad:
         raise AnalysisError(f"inputs must be plain Symbols, got {bad}")
