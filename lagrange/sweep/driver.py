@@ -58,7 +58,8 @@ def sweep(system, over: Mapping[str, Sequence[float] | str], *, t_end: float | N
     ----------
     system : System, or any picklable callable ``task(point) -> {column: scalar}``
     over : ``{name: values}`` — values a sequence or ``"start:stop:num"``; names are parameters, inputs, coordinates
-        or velocities (``"theta_dot"``), or anything ``setup`` understands
+        or velocities (``"theta_dot"``), or anything ``setup`` understands; with a System, keys may also be the
+        objects (``theta``, ``theta.diff(t)``, sympy's ``dynamicsymbols``, parameter symbols), read by name
     t_end, initial, params : the base run (the point's values override them); t_end is required for a System
     inputs : the base values of the system's inputs (:mod:`lagrange.model.inputs`; any form ``simulate`` takes);
         an ``over`` name that is an input sweeps its constant value; ``setup`` may return input values too (a
