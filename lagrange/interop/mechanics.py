@@ -57,6 +57,7 @@ from ..errors import DeclarationError
 from ..model.constraints import Holonomic, Nonholonomic
 from ..model.coordinates import SYMPY_TIME, coordinate_name, normalize_time
 from ..safe_sympify import sympify as _sympify
+from ..simplification import is_zero
 
 __all__ = ["from_mechanics", "to_mechanics"]
 
@@ -287,12 +288,18 @@ def _implied_by_configuration(rows, hol, q, qd) -> list[bool]:
     if everything.atoms(AppliedUndef, sp.Derivative):
         return [False] * len(rows)
     args = sorted(everything.free_symbols - set(vs), key=sp.default_sort_key)
-    f = sp.lambdify(args, everything, "numpy", cse=True)
+    try:
+        f = sp.lambdify(args, everything, "numpy", cse=True)
+    except (TypeError, ValueError, NameError, AttributeError):
+        return [False] * len(rows)  # not evaluable: every row is kept (a row is dropped only when shown implied)
     rng = np.random.default_rng(11)
     implied, good = [True] * len(rows), 0
     for _ in range(4 * _POINTS):
-        with np.errstate(all="ignore"):
-            m = np.array(f(*rng.uniform(0.2, 1.3, len(args))), dtype=complex)
+        try:
+            with np.errstate(all="ignore"):
+                m = np.array(f(*rng.uniform(0.2, 1.3, len(args))), dtype=complex)
+        except (TypeError, ValueError, NameError, AttributeError, ZeroDivisionError, OverflowError):
+            return [False] * len(rows)
         if not np.all(np.isfinite(m)):
             continue
         good += 1
@@ -355,32 +362,41 @@ _POINTS, _RTOL = 6, 1e-9
 def _vanishes(r) -> bool:
     """Zero, or zero at random points to ``_RTOL`` of the size of its terms. Body-frame speeds make the kinematic
     residues long sums of trigonometric products that cancel, too long to expand or simplify; an expression that
-    is not identically zero vanishes at random points with probability zero."""
-    return r == 0 or _zero_at_random_points(r)
+    is not identically zero vanishes at random points with probability zero. When no point can be evaluated
+    (a function numpy lacks, a value defined nowhere in the sampled box) the bounded symbolic test decides."""
+    if r == 0:
+        return True
+    verdict = _zero_at_random_points(r)
+    return is_zero(r) if verdict is None else verdict
 
 
-def _zero_at_random_points(r) -> bool:
+def _zero_at_random_points(r) -> bool | None:
+    """True when ``r`` vanishes at ``_POINTS`` random points, False at the first point where it does not, None
+    when it cannot be evaluated at enough points."""
     import numpy as np
 
     # functions of time and their derivatives take independent values at one instant
     stand_in = {a: sp.Dummy() for a in r.atoms(sp.Derivative, AppliedUndef)}
     r = r.xreplace(stand_in)
     args = sorted(r.free_symbols, key=sp.default_sort_key)
-    f = sp.lambdify(args, list(sp.Add.make_args(r)), "numpy", cse=True)
     rng = np.random.default_rng(7)
     good = 0
-    for _ in range(4 * _POINTS):
-        with np.errstate(all="ignore"):
-            terms = np.array(f(*rng.uniform(0.2, 1.3, len(args))), dtype=complex)
-        value, scale = terms.sum(), np.abs(terms).sum()
-        if not (np.isfinite(value) and np.isfinite(scale)):
-            continue
-        if abs(value) > _RTOL * max(abs(scale), 1e-300):
-            return False
-        good += 1
-        if good == _POINTS:
-            return True
-    return False
+    try:
+        f = sp.lambdify(args, list(sp.Add.make_args(r)), "numpy", cse=True)
+        for _ in range(4 * _POINTS):
+            with np.errstate(all="ignore"):
+                terms = np.array(f(*rng.uniform(0.2, 1.3, len(args))), dtype=complex)
+            value, scale = terms.sum(), np.abs(terms).sum()
+            if not (np.isfinite(value) and np.isfinite(scale)):
+                continue
+            if abs(value) > _RTOL * max(abs(scale), 1e-300):
+                return False
+            good += 1
+            if good == _POINTS:
+                return True
+    except (TypeError, ValueError, NameError, AttributeError, ZeroDivisionError, OverflowError):
+        return None
+    return None
 
 
 def _check_frame(B, N, q, qd, u_map, what: str) -> None:
