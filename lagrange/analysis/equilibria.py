@@ -21,7 +21,7 @@ import sympy as sp
 from ..conventions import t
 from ..errors import AnalysisError, LagrangeError
 from ..limits import bounded
-from ..model.coordinates import coordinate_name, position_symbol, to_functions
+from ..model.coordinates import canonical_key, coordinate_name, position_symbol, to_functions
 from ..safe_sympify import expression as _expression
 from ..safe_sympify import lambdify as _lambdify
 from ..safe_sympify import sympify as _sympify
@@ -131,8 +131,9 @@ def _numeric_problem(system, params, guess, conds, unknowns):
         raise LagrangeError(f"missing parameter values for {sorted(map(str, free))}")
     x0 = np.zeros(len(unknowns))
     for k, v in (guess or {}).items():
+        key = canonical_key(k, system.coordinates)  # dynamicsymbols
         for i, c in enumerate(system.coordinates):
-            if k in (c, coordinate_name(c), position_symbol(c)):
+            if key in (c, coordinate_name(c), position_symbol(c)):
                 x0[i] = _start_value(k, v)
                 break
         else:

@@ -57,7 +57,7 @@ import sympy as sp
 from ..conventions import t
 from ..errors import AnalysisError, ParameterError
 from ..integrate.constrained import complete_speeds, pivot_columns
-from ..model.coordinates import coordinate_name, position_symbol, velocity_symbol
+from ..model.coordinates import canonical_key, coordinate_name, position_symbol, velocity_symbol
 from ..safe_sympify import expression as _expression
 from ..safe_sympify import lambdify as _lambdify
 from ..safe_sympify import sympify as _sympify
@@ -93,12 +93,13 @@ def reference_state(system, about: Mapping | None, velocities: Mapping | None, i
     bad = []
     for src in (about or {}, velocities or {}):
         for k, val in src.items():
+            key = canonical_key(k, system.coordinates, inputs)  # dynamicsymbols and their derivatives
             for table, out in ((pos, q0), (vel, v0), (inp, u0)):
-                if k in table:
+                if key in table:
                     if isinstance(val, str):  # never parse user strings here (only the spec parser does)
                         raise AnalysisError(f"the reference value of {k} must be a number or a sympy expression, "
                                             f"not the string {val!r}")
-                    out[table[k]] = _expression(val, where=f"the reference value of {k}")
+                    out[table[key]] = _expression(val, where=f"the reference value of {k}")
                     break
             else:
                 bad.append(str(k))

@@ -23,7 +23,14 @@ from sympy.core.function import AppliedUndef
 
 from ..errors import AnalysisError, SymbolicTimeoutError
 from ..limits import bounded
-from ..model.coordinates import coordinate_name, is_coordinate, position_symbol, to_symbols
+from ..model.coordinates import (
+    canonical_keys,
+    coordinate_name,
+    is_coordinate,
+    normalize_time,
+    position_symbol,
+    to_symbols,
+)
 from ..records import record
 from ..safe_sympify import sympify as _sympify
 from ..simplification import run_bounded
@@ -119,10 +126,12 @@ def expand_potential(V, about: Mapping, order: int = 2) -> PotentialSeries:
     >>> expand_potential(V, {x: 0}, 4).terms[4]
     k*l0*x**4/(8*s**3)
     """
+    if isinstance(about, Mapping):  # sympy's dynamicsymbols: their time becomes lagrange.t, in V too
+        about = canonical_keys(about)
     coords = _check_about(about)
     if not isinstance(order, int) or isinstance(order, bool) or order < 0:
         raise AnalysisError(f"order must be a non-negative integer, got {order!r}")
-    V = _sympify(V)
+    V = normalize_time(_sympify(V))
     if V.atoms(sp.Derivative):
         raise AnalysisError(f"V = {V} depends on velocities: a potential depends on the coordinates (and t) only")
     fn = [q for q in coords if is_coordinate(q)]

@@ -42,7 +42,7 @@ import sympy as sp
 from ..conventions import t
 from ..errors import AnalysisError, LagrangeError
 from ..limits import bounded
-from ..model.coordinates import coordinate_name, position_symbol, velocity_symbol
+from ..model.coordinates import canonical_key, coordinate_name, position_symbol, velocity_symbol
 from ..records import record
 from ..safe_sympify import expression as _expression
 from ..safe_sympify import sympify as _sympify
@@ -249,11 +249,12 @@ def _resolve(system, names, what: str, velocity: bool) -> list[int]:
     """Indices of coordinates given by object or name (velocities too when ``velocity``)."""
     idx = []
     for k in names:
+        key = canonical_key(k, system.coordinates)  # dynamicsymbols and their derivatives
         for i, q in enumerate(system.coordinates):
             keys = {q, coordinate_name(q), position_symbol(q)}
             if velocity:
                 keys |= {q.diff(t), velocity_symbol(q), velocity_symbol(q).name}
-            if k in keys:
+            if key in keys:
                 idx.append(i)
                 break
         else:
@@ -341,7 +342,8 @@ def linearize(system, about: Mapping | None = None, velocities: Mapping | None =
     ((x(t),), g/l)
     """
     eqs = system.derived
-    inputs = tuple(getattr(eqs, "inputs", ()) if inputs is None else inputs)
+    declared = tuple(getattr(eqs, "inputs", ()))
+    inputs = declared if inputs is None else tuple(canonical_key(u, (), declared) for u in inputs)  # specifieds
     bad = [u for u in inputs if not isinstance(u, sp.Symbol)]
     if bad:
         raise AnalysisError(f"inputs must be plain Symbols, got {bad}")

@@ -44,6 +44,7 @@ import sympy as sp
 
 from ..conventions import t as time_symbol
 from ..errors import InputError, IntegrationError, ParameterError
+from ..model.coordinates import canonical_key
 from ..records import record
 from ..safe_sympify import lambdify as _lambdify
 
@@ -143,6 +144,7 @@ def resolve_inputs(eqs, values: Mapping | None, t_span, y0) -> tuple[dict, Input
     problems: list[str] = []
     wanted = [u.name for u in eqs.inputs]
     for key, value in values.items():
+        key = canonical_key(key, (), eqs.inputs)  # sympy's specifieds u(t) name inputs too
         name = key.name if isinstance(key, sp.Symbol) else str(key)
         if name not in wanted:
             problems.append(f"{name} is not an input of this system (its inputs: {', '.join(wanted) or 'none'})")

@@ -29,7 +29,7 @@ import numpy as np
 from scipy.integrate import cumulative_simpson
 
 from ..errors import LagrangeError, ParameterError, SingularMassMatrixError
-from ..model.coordinates import coordinate_name
+from ..model.coordinates import coordinate_name, key_name
 from ..records import record
 from .kkt import solve_least_constraint
 from .masspoints import MassPointModel, NotApplicable, declared_symbols, mass_point_model
@@ -328,7 +328,7 @@ def check_gauss(system, params: Mapping, *, samples: int = 5, seed: int = 0, rto
     lparams = {k: v for k, v in params.items() if k in wanted}
     model = system.compile(lparams)
     names = [coordinate_name(q) for q in system.coordinates]
-    ranges = {str(getattr(k, "name", k)): v for k, v in (ranges or {}).items()}
+    ranges = {key_name(k, system.coordinates): v for k, v in (ranges or {}).items()}  # velocities too
     first = None
     if initial is not None:
         from ..integrate.run import initial_state

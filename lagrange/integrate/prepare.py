@@ -25,7 +25,7 @@ from ..errors import (
     SingularMassMatrixError,
     shown,
 )
-from ..model.coordinates import coordinate_name, is_coordinate
+from ..model.coordinates import canonical_keys, coordinate_name, is_coordinate
 
 __all__ = ["initial_state", "given_entries", "model_for", "check_initial_mass_matrix", "refuse_route",
            "constant_input_run", "split_inputs", "check_model",
@@ -41,6 +41,7 @@ def initial_state(coords: Sequence, initial: Mapping, *, speeds_optional: bool =
     non-finite entry.
     """
     names, slot_of = _slots(tuple(coords))
+    initial = canonical_keys(initial, coords)  # dynamicsymbols and their derivatives
     n = len(names)
     values = [math.nan] * (2 * n)
     filled = [False] * (2 * n)

@@ -18,13 +18,26 @@ energy when nothing moves with time.
 Kane's models (``KanesMethod``, mechanics ``System``) are converted through their bodies and loads:
 ``T = Σ body.kinetic_energy(frame)``, ``V = Σ body.potential_energy``, each load gives the generalized
 force ``Q_r = F · ∂v_P/∂q̇_r`` (``τ · ∂ω_B/∂q̇_r`` for a torque), after the generalized speeds are
-replaced by their expressions in q and q̇ from the kinematic differential equations. Configuration
-constraints become :class:`~lagrange.Holonomic` and velocity constraints :class:`~lagrange.Nonholonomic`.
-This is only sound when every velocity in the model is the time derivative of a position in the
-coordinates, so :func:`from_mechanics` checks it: a model that builds a non-holonomic constraint into its
-kinematics (sympy's rolling disc sets the contact point's velocity to zero instead of declaring the
-contact coordinates and the rolling constraints) is refused, as are auxiliary speeds. Its Kane's equations
-are right, but no Lagrangian T(q, q̇) has them.
+replaced by their expressions in q and q̇ from the kinematic differential equations (the speeds may be any
+invertible linear map of q̇, body-frame angular velocity components for instance). Configuration
+constraints become :class:`~lagrange.Holonomic` and velocity constraints :class:`~lagrange.Nonholonomic`,
+except the velocity constraints that are combinations of the time derivatives of the configuration
+constraints (Kane's models list them again to choose the dependent speeds): those are dropped, as they
+would be redundant rows. This is only sound when every velocity in the model is the time derivative of a
+position in the coordinates, so :func:`from_mechanics` checks it: a model that builds a non-holonomic
+constraint into its kinematics (sympy's rolling disc sets the contact point's velocity to zero instead of
+declaring the contact coordinates and the rolling constraints) is refused, as are auxiliary speeds. Its
+Kane's equations are right, but no Lagrangian T(q, q̇) has them. The kinematic residues of these checks
+(and the span test of the velocity constraints) are evaluated at random points in double precision, to
+``1e-9`` of the size of their terms: with body-frame speeds they are long trigonometric sums that cancel,
+too long to expand or simplify.
+
+Specified quantities. sympy's specifieds (functions of time in the loads that are neither coordinates nor
+speeds, e.g. the cart force ``dynamicsymbols('F')`` of ``n_link_pendulum_on_cart``) become lagrange inputs
+of the same name (:func:`lagrange.inputs`), whose values are given at simulate time; the other way,
+:func:`to_mechanics` turns every input back into a specified ``dynamicsymbols(name)``, so sympy's
+``linearize`` finds it and returns its column of B. A load with the time derivative of a specified is
+refused (an input has none).
 
 The other way, lagrange's non-potential generalized forces ``F_q + ∂P/∂q̇ − ∂D/∂q̇`` reach
 ``LagrangesMethod`` as a force ``F_q`` along ``N.x`` at an auxiliary point whose velocity is ``q̇_r N.x``
@@ -66,6 +79,7 @@ def from_mechanics(obj, coordinates: Sequence | None = None, *, name: str = "", 
         For a Lagrangian, ``coordinates`` must be given. A ``LagrangesMethod`` brings its Lagrangian,
         coordinates, loads (``forcelist`` with its ``frame``) and holonomic and non-holonomic constraints; Kane's
         models their bodies, loads, kinematic differential equations and constraints (see the module notes).
+        Specifieds in the loads become inputs of the same names.
     coordinates : sequence of dynamicsymbols (or lagrange coordinates), only with a Lagrangian
     name : str, optional
     **system_options
@@ -142,7 +156,7 @@ def _from_lagranges_method(lm, name: str):
             raise DeclarationError("LagrangesMethod with loads but no frame: its generalized forces need the "
                                    "inertial frame (LagrangesMethod(..., frame=N))")
         qd = [c.diff(SYMPY_TIME) for c in q]
-        forces = _generalized_forces(lm.forcelist, lm.inertial, q, qd, {})
+        forces = _specifieds_to_inputs(_generalized_forces(lm.forcelist, lm.inertial, q, qd, {}), q)
     constraints = [Holonomic(e, f"holonomic {k + 1}") for k, e in enumerate(lm._hol_coneqs)]
     n_hol = len(lm._hol_coneqs)
     constraints += [Nonholonomic(e, f"non-holonomic {k + 1}") for k, e in enumerate(lm.coneqs[n_hol:])]
@@ -174,6 +188,28 @@ def _generalized_forces(loads, N, q, qd, u_map) -> dict:
         for c, v in zip(q, qd):
             out[c] += sp.expand(vec.dot(motion.diff(v, N, var_in_dcm=False)))
     return out
+
+
+def _specifieds_to_inputs(forces: dict, known) -> dict:
+    """``forces`` with sympy's specifieds (functions of time in the loads that are not coordinates or speeds,
+    e.g. ``dynamicsymbols('F')``) replaced by lagrange inputs of the same name (:func:`lagrange.inputs`), whose
+    values are given at simulate time. A load with the derivative of a specified is refused: an input has
+    none."""
+    from ..model.inputs import inputs
+
+    known = set(known)
+    found: set = set()
+    for e in forces.values():
+        for d in _sympify(e).atoms(sp.Derivative):
+            if isinstance(d.expr, AppliedUndef) and d.expr not in known:
+                raise DeclarationError(f"from_mechanics: a load contains {d}, the derivative of the specified "
+                                       f"{d.expr}: a lagrange input has no derivative; make the load a function of "
+                                       f"{d.expr} itself, or give {d.expr} as a coordinate")
+        found |= {f for f in _sympify(e).atoms(AppliedUndef) if f.args == (SYMPY_TIME,) and f not in known}
+    if not found:
+        return forces
+    to_input = {f: inputs(f.func.__name__) for f in found}
+    return {c: _sympify(e).xreplace(to_input) for c, e in forces.items()}
 
 
 def _motion(where, N):
@@ -218,12 +254,64 @@ def _from_kane_model(N, q, u, kdes, bodies, loads, hol, nonhol, name):
         elif isinstance(where, me.ReferenceFrame):
             _check_frame(where, N, q, qd, u_map, f"the frame {where.name} of a torque")
     T = T.subs(u_map) if u_map else T
-    forces = _generalized_forces(loads, N, q, qd, u_map)
+    forces = _specifieds_to_inputs(_generalized_forces(loads, N, q, qd, u_map), q + list(u))
     constraints = [Holonomic(e, f"configuration {k + 1}") for k, e in enumerate(hol)]
-    constraints += [Nonholonomic(sp.expand(e.subs(u_map) if u_map else e), f"velocity {k + 1}")
-                    for k, e in enumerate(nonhol)]
+    rows = [sp.expand(e.subs(u_map) if u_map else e) for e in nonhol]
+    implied = _implied_by_configuration(rows, hol, q, qd)
+    constraints += [Nonholonomic(e, f"velocity {k + 1}") for k, e in enumerate(rows) if not implied[k]]
     return _system(q, normalize_time(T), normalize_time(V), forces=normalize_time(forces), constraints=constraints,
                    name=name)
+
+
+def _implied_by_configuration(rows, hol, q, qd) -> list[bool]:
+    """For each velocity constraint ``a·q̇ + b = 0``: is it a combination of the time derivatives of the
+    configuration constraints (``J q̇ + ∂φ/∂t``)? Kane's models list those derivatives again as velocity
+    constraints (to choose the dependent speeds); kept, they would be redundant rows. The row ``[a, b]`` must lie
+    in the span of ``[J, ∂φ/∂t]`` at random points (ranks to ``_RTOL``)."""
+    import numpy as np
+
+    if not hol or not rows:
+        return [False] * len(rows)
+    qs, vs, plain = _plain(q, qd)
+    ts = sp.Dummy("t")
+
+    def flat(e):
+        return _sympify(e).xreplace(plain).xreplace({SYMPY_TIME: ts})
+
+    def block(es):
+        return [[sp.diff(e, s) for s in vs] + [e.xreplace(dict.fromkeys(vs, 0))] for e in es]
+
+    phis = [flat(e) for e in hol]
+    base = [[sp.diff(p, s) for s in qs] + [sp.diff(p, ts)] for p in phis]
+    rows_p = block([flat(e) for e in rows])
+    everything = sp.Matrix(base + rows_p)
+    if everything.atoms(AppliedUndef, sp.Derivative):
+        return [False] * len(rows)
+    args = sorted(everything.free_symbols - set(vs), key=sp.default_sort_key)
+    try:
+        f = sp.lambdify(args, everything, "numpy", cse=True)
+    except (TypeError, ValueError, NameError, AttributeError):
+        return [False] * len(rows)  # not evaluable: every row is kept (a row is dropped only when shown implied)
+    rng = np.random.default_rng(11)
+    implied, good = [True] * len(rows), 0
+    for _ in range(4 * _POINTS):
+        try:
+            with np.errstate(all="ignore"):
+                m = np.array(f(*rng.uniform(0.2, 1.3, len(args))), dtype=complex)
+        except (TypeError, ValueError, NameError, AttributeError, ZeroDivisionError, OverflowError):
+            return [False] * len(rows)
+        if not np.all(np.isfinite(m)):
+            continue
+        good += 1
+        B = m[:len(base)]
+        tol = _RTOL * max(float(np.abs(m).max()), 1e-300) * m.shape[1]
+        r0 = np.linalg.matrix_rank(B, tol=tol)
+        for k in range(len(rows)):
+            if np.linalg.matrix_rank(np.vstack([B, m[len(base) + k]]), tol=tol) > r0:
+                implied[k] = False
+        if good == _POINTS:
+            return implied
+    return [False] * len(rows)
 
 
 def _plain(q, qd):
@@ -243,27 +331,72 @@ def _non_holonomic_refusal(what: str, detail: str) -> DeclarationError:
 
 def _check_point(P, N, q, qd, u_map, what: str) -> None:
     """The velocity of P in N must be exact: ``v = Σ a_j(q, t) q̇_j + b(q, t)`` with ``∂a_j/∂q_k = ∂a_k/∂q_j``
-    and ``∂a_j/∂t = ∂b/∂q_j`` in every inertial component — the time derivative of a position r(q, t)."""
+    and ``∂a_j/∂t = ∂b/∂q_j`` in every inertial component — the time derivative of a position r(q, t). (A point
+    whose velocity is set to zero need not be fixed, a contact point is not: positions are not trusted.)"""
     v = _motion(P, N)
     v = v.subs(u_map) if u_map else v
     qs, vs, plain = _plain(q, qd)
     ts = sp.Dummy("t")
     for axis in (N.x, N.y, N.z):
-        c = sp.expand(v.dot(axis)).xreplace(plain).xreplace({SYMPY_TIME: ts})
+        c = v.dot(axis).xreplace(plain).xreplace({SYMPY_TIME: ts})  # not expanded: body-frame speeds bloat it
         if c.atoms(AppliedUndef):
             raise _non_holonomic_refusal(what, f"has a velocity in {sorted(map(str, c.atoms(AppliedUndef)))}, which "
                                          "are not coordinates or speeds of the model")
         a = [sp.diff(c, s) for s in vs]
-        if any(sp.diff(ai, s) != 0 for ai in a for s in vs):
+        b = c.xreplace(dict.fromkeys(vs, 0))
+        if not _vanishes(c - sum(ai * s for ai, s in zip(a, vs)) - b):
             raise _non_holonomic_refusal(what, "has a velocity that is not linear in q̇")
-        b = sp.expand(c - sum(ai * s for ai, s in zip(a, vs)))
         for j in range(len(q)):
             residues = [sp.diff(a[j], ts) - sp.diff(b, qs[j])]
             residues += [sp.diff(a[j], qs[k]) - sp.diff(a[k], qs[j]) for k in range(j + 1, len(q))]
-            if not all(r == 0 or is_zero(r) for r in residues):
+            if not all(_vanishes(r) for r in residues):
                 raise _non_holonomic_refusal(
                     what, f"moves with a velocity along {axis} that is not the time derivative of any position in "
                     f"the coordinates ({', '.join(map(str, q))})")
+
+
+#: random points, and the relative size (to the sum of its terms' magnitudes) under which a residue is zero
+_POINTS, _RTOL = 6, 1e-9
+
+
+def _vanishes(r) -> bool:
+    """Zero, or zero at random points to ``_RTOL`` of the size of its terms. Body-frame speeds make the kinematic
+    residues long sums of trigonometric products that cancel, too long to expand or simplify; an expression that
+    is not identically zero vanishes at random points with probability zero. When no point can be evaluated
+    (a function numpy lacks, a value defined nowhere in the sampled box) the bounded symbolic test decides."""
+    if r == 0:
+        return True
+    verdict = _zero_at_random_points(r)
+    return is_zero(r) if verdict is None else verdict
+
+
+def _zero_at_random_points(r) -> bool | None:
+    """True when ``r`` vanishes at ``_POINTS`` random points, False at the first point where it does not, None
+    when it cannot be evaluated at enough points."""
+    import numpy as np
+
+    # functions of time and their derivatives take independent values at one instant
+    stand_in = {a: sp.Dummy() for a in r.atoms(sp.Derivative, AppliedUndef)}
+    r = r.xreplace(stand_in)
+    args = sorted(r.free_symbols, key=sp.default_sort_key)
+    rng = np.random.default_rng(7)
+    good = 0
+    try:
+        f = sp.lambdify(args, list(sp.Add.make_args(r)), "numpy", cse=True)
+        for _ in range(4 * _POINTS):
+            with np.errstate(all="ignore"):
+                terms = np.array(f(*rng.uniform(0.2, 1.3, len(args))), dtype=complex)
+            value, scale = terms.sum(), np.abs(terms).sum()
+            if not (np.isfinite(value) and np.isfinite(scale)):
+                continue
+            if abs(value) > _RTOL * max(abs(scale), 1e-300):
+                return False
+            good += 1
+            if good == _POINTS:
+                return True
+    except (TypeError, ValueError, NameError, AttributeError, ZeroDivisionError, OverflowError):
+        return None
+    return None
 
 
 def _check_frame(B, N, q, qd, u_map, what: str) -> None:
@@ -275,8 +408,7 @@ def _check_frame(B, N, q, qd, u_map, what: str) -> None:
     except (ValueError, AttributeError, TypeError):
         raise _non_holonomic_refusal(what, "has no orientation relative to the inertial frame") from None
     for axis in (N.x, N.y, N.z):
-        r = sp.expand((w - true).dot(axis))
-        if r != 0 and not is_zero(r):
+        if not _vanishes((w - true).dot(axis)):
             raise _non_holonomic_refusal(what, f"turns with an angular velocity along {axis} that differs from the "
                                          "time derivative of its orientation")
 
@@ -291,7 +423,8 @@ def to_mechanics(system):
     (see the module notes); holonomic constraints ``φ = 0`` go to ``hol_coneqs`` and non-holonomic ones
     ``A q̇ + b = 0`` to ``nonhol_coneqs``. ``form_lagranges_equations()`` has been called, so
     ``mass_matrix_full``, ``forcing_full`` and ``rhs()`` are ready. The coordinates are
-    ``dynamicsymbols`` with the names of the system's coordinates.
+    ``dynamicsymbols`` with the names of the system's coordinates, and each input (:func:`lagrange.inputs`) is
+    the specified ``dynamicsymbols(name)``, so ``linearize(..., A_and_B=True)`` gives its column of B.
 
     Raises
     ------
@@ -307,7 +440,8 @@ def to_mechanics(system):
         raise DeclarationError(f"to_mechanics: {' and '.join(parts)} have no counterpart in LagrangesMethod")
     ts = me.dynamicsymbols._t
     # each coordinate becomes sympy's dynamicsymbols(name) (no assumptions), time becomes dynamicsymbols._t
-    back = {t: ts, **{c: sp.Function(coordinate_name(c))(ts) for c in system.coordinates}}
+    back = {t: ts, **{c: sp.Function(coordinate_name(c))(ts) for c in system.coordinates},
+            **{u: sp.Function(u.name)(ts) for u in system.inputs}}  # inputs become sympy's specifieds
 
     def s(e):
         return _sympify(e).xreplace(back)

@@ -34,6 +34,9 @@ __all__ = [
     "time_derivative",
     "SYMPY_TIME",
     "normalize_time",
+    "canonical_key",
+    "canonical_keys",
+    "key_name",
 ]
 
 #: The time symbol of ``sympy.physics.mechanics.dynamicsymbols`` (``Symbol('t')``, no assumptions).
@@ -130,6 +133,68 @@ def normalize_time(obj):
     if type(obj) is dict:
         return {normalize_time(k): normalize_time(v) for k, v in obj.items()}
     return obj
+
+
+def canonical_key(key, coordinates: Sequence = (), inputs: Sequence = ()):
+    """A key naming a coordinate, a velocity, an acceleration or an input, in the form the system holds it.
+
+    The one place where keys given by users are normalised; every function that takes a dict keyed by
+    coordinates (initial values, ``sol[q]``, ``about=``, plots, sweeps, Gauss' check) or by inputs passes
+    its keys through here before looking them up. sympy's time ``Symbol('t')`` becomes :data:`lagrange.t`
+    (:func:`normalize_time`), so ``dynamicsymbols('q')``, ``dynamicsymbols('q', 1)``, ``q.diff()`` and
+    ``q.diff(t, 2)`` work wherever ``q(t)`` does. An undefined function of time named like one of
+    ``coordinates`` is that coordinate whatever its assumptions (``dynamicsymbols('q')`` has none,
+    :func:`coordinates` makes real ones), and a function of time ``u(t)`` named like one of ``inputs`` is
+    that input (sympy's specifieds are functions of time; lagrange's inputs are symbols). Names (strings)
+    and anything else are returned unchanged, for the caller's own lookup and its error message.
+
+    >>> from sympy.physics.mechanics import dynamicsymbols
+    >>> from lagrange import coordinates, t
+    >>> x = coordinates("x")
+    >>> canonical_key(dynamicsymbols("x", 1), [x]) == x.diff(t)
+    True
+    """
+    if not isinstance(key, sp.Basic):
+        return key
+    key = normalize_time(key)
+    if isinstance(key, sp.Derivative):
+        if all(v == t for v, _ in key.variable_count):
+            return key.xreplace({key.expr: canonical_key(key.expr, coordinates)})
+        return key
+    if isinstance(key, AppliedUndef) and key.args == (t,):
+        name = key.func.__name__
+        for c in coordinates:
+            if is_coordinate(c) and c.func.__name__ == name:
+                return c
+        for u in inputs:
+            if getattr(u, "name", None) == name:
+                return u
+    return key
+
+
+def canonical_keys(mapping, coordinates: Sequence = (), inputs: Sequence = ()) -> dict:
+    """``mapping`` (a Mapping, or None for an empty dict) with every key passed through :func:`canonical_key`.
+
+    Two keys that name the same thing keep the last value, as in any dict."""
+    return {canonical_key(k, coordinates, inputs): v for k, v in (mapping or {}).items()}
+
+
+def key_name(key, coordinates: Sequence = ()) -> str:
+    """The name by which a key is looked up in tables keyed by names (sweeps, sampling ranges): ``"q"`` for a
+    coordinate ``q(t)`` (or sympy's ``dynamicsymbols('q')``), ``"q_dot"`` for its velocity, a symbol's name; a
+    string as it is, anything else as its text.
+
+    >>> from sympy.physics.mechanics import dynamicsymbols
+    >>> key_name(dynamicsymbols("x", 1)), key_name("x_dot")
+    ('x_dot', 'x_dot')
+    """
+    key = canonical_key(key, coordinates)
+    if is_coordinate(key):
+        return coordinate_name(key)
+    if isinstance(key, sp.Derivative) and is_coordinate(key.expr) and key.derivative_count == 1:
+        return coordinate_name(key.expr) + VELOCITY_SUFFIX
+    name = getattr(key, "name", None)
+    return name if isinstance(name, str) else str(key)
 
 
 def normalize_fields(obj, expressions: tuple[str, ...] = ()) -> None:

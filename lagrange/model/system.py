@@ -353,9 +353,14 @@ class System:
             if f in coords:
                 continue
             if f.args == (t,):
+                name = coordinate_name(f)
+                driven = what in ("P", "rayleigh") or what.startswith("F_")
                 problems.append(
                     f"{what} contains {f}, which is not a coordinate of this system "
                     f"({', '.join(sorted(names))}); add it to the coordinates or prescribe its motion"
+                    + (f"; for a force given in time (a sympy specified), use an input: {name} = "
+                       f"lagrange.inputs('{name}') in place of {f}, with its values given at simulate "
+                       f"time (simulate(..., inputs={{{name}: value or function of t}}))" if driven else "")
                 )
             else:
                 problems.append(f"{what} contains {f}: coordinates must be functions of lagrange.t only")

@@ -15,7 +15,7 @@ from pathlib import Path
 import numpy as np
 
 from ..errors import LagrangeError
-from ..model.coordinates import coordinate_name, is_coordinate
+from ..model.coordinates import canonical_key, coordinate_name, is_coordinate
 
 __all__ = ["plot_trajectory", "select_coordinates", "new_figure", "multiplier_labels", "PlotError"]
 
@@ -40,11 +40,12 @@ def select_coordinates(traj, coordinates=None) -> list[int]:
     n = traj.model.n
     if coordinates is None:
         return list(range(n))
-    if isinstance(coordinates, (str, int)) or is_coordinate(coordinates):
+    if isinstance(coordinates, (str, int)) or is_coordinate(canonical_key(coordinates)):
         coordinates = [coordinates]
     names = [coordinate_name(c) for c in traj.coordinates]
     out = []
-    for c in coordinates:
+    for given in coordinates:
+        c = canonical_key(given, traj.coordinates)  # dynamicsymbols
         if isinstance(c, str) and c in names:
             out.append(names.index(c))
         elif isinstance(c, (int, np.integer)) and not isinstance(c, bool) and -n <= c < n:
@@ -52,7 +53,7 @@ def select_coordinates(traj, coordinates=None) -> list[int]:
         elif is_coordinate(c) and c in traj.coordinates:
             out.append(traj.coordinates.index(c))
         else:
-            raise PlotError(f"cannot plot {c!r}: not a coordinate of this trajectory "
+            raise PlotError(f"cannot plot {given!r}: not a coordinate of this trajectory "
                             f"(coordinates: {', '.join(names)}; give names, coordinates or indices)")
     if not out:
         raise PlotError("coordinates=[] selects nothing to plot")

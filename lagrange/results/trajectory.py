@@ -25,7 +25,7 @@ import sympy as sp
 
 from ..codegen.numeric import NumericModel
 from ..conventions import VELOCITY_SUFFIX, t
-from ..model.coordinates import coordinate_name, is_coordinate
+from ..model.coordinates import canonical_key, coordinate_name, is_coordinate
 from ..records import record
 from .verdict import RunStatus, Verdict
 
@@ -106,6 +106,7 @@ class Trajectory:
                 return ("input", [u.name for u in inputs].index(key))  # type: ignore[return-value]
             raise KeyError(f"{key!r} is not a coordinate, velocity or input of this trajectory "
                            f"({', '.join(names + [u.name for u in inputs])})")
+        key = canonical_key(key, self.coordinates, inputs)  # dynamicsymbols and their derivatives
         if isinstance(key, sp.Symbol) and key in inputs:
             return ("input", inputs.index(key))  # type: ignore[return-value]
         if is_coordinate(key) and key in self.coordinates:

@@ -12,7 +12,7 @@ from .executor import run_points
 from .grid import grid_points, random_points, run_id
 from .identity import check_point_names, reserved_columns, run_config
 from .table import Store, require_pandas, to_frame
-from .task import SimulationTask, dumps_task, state_names
+from .task import SimulationTask, dumps_task, state_name, state_names
 
 __all__ = ["sweep", "Progress"]
 
@@ -58,7 +58,8 @@ def sweep(system, over: Mapping[str, Sequence[float] | str], *, t_end: float | N
     ----------
     system : System, or any picklable callable ``task(point) -> {column: scalar}``
     over : ``{name: values}`` — values a sequence or ``"start:stop:num"``; names are parameters, inputs, coordinates
-        or velocities (``"theta_dot"``), or anything ``setup`` understands
+        or velocities (``"theta_dot"``), or anything ``setup`` understands; with a System, keys may also be the
+        objects (``theta``, ``theta.diff(t)``, sympy's ``dynamicsymbols``, parameter symbols), read by name
     t_end, initial, params : the base run (the point's values override them); t_end is required for a System
     inputs : the base values of the system's inputs (:mod:`lagrange.model.inputs`; any form ``simulate`` takes);
         an ``over`` name that is an input sweeps its constant value; ``setup`` may return input values too (a
@@ -109,6 +110,8 @@ def sweep(system, over: Mapping[str, Sequence[float] | str], *, t_end: float | N
     ([[1.0, 'ok'], [4.0, 'ok']], [-1.0, 1.0])
     """
     require_pandas()
+    if hasattr(system, "derived") and isinstance(over, Mapping):  # coordinates, velocities, symbols by object
+        over = {state_name(system, k): v for k, v in over.items()}
     points = random_points(over, random, seed=seed) if random is not None else grid_points(over)
     names = list(points[0])
     if callable(system) and not hasattr(system, "derived"):

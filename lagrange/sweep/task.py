@@ -28,11 +28,11 @@ from ..conventions import VELOCITY_SUFFIX
 from ..errors import SweepError
 from ..integrate.prepare import given_entries
 from ..integrate.run import initial_state
-from ..model.coordinates import coordinate_name
+from ..model.coordinates import coordinate_name, key_name
 from .pickling import dumps_task
 
-__all__ = ["SimulationTask", "InputExpressions", "execute", "dumps_task", "state_names", "scalar_columns",
-           "release_task", "KEEP_TASKS"]
+__all__ = ["SimulationTask", "InputExpressions", "execute", "dumps_task", "state_name", "state_names",
+           "scalar_columns", "release_task", "KEEP_TASKS"]
 
 Summary = Callable[[Any], Any]
 
@@ -218,19 +218,17 @@ def _check_option_names(options: Mapping) -> None:
                          f"of lagrange.simulate ({', '.join(known)}); the system's inputs go in `inputs=`")
 
 
+def state_name(system, key) -> str:
+    """The name of a key given by object (:func:`~lagrange.model.coordinates.key_name`)."""
+    return key_name(key, system.coordinates)
+
+
 def _by_name(system, values: Mapping) -> dict[str, float]:
     if not values:
         return {}
     names = state_names(system)
     n = len(names) // 2
-    out = {}
-    for key, v in values.items():
-        if isinstance(key, str):
-            out[key] = float(v)
-        elif getattr(key, "derivative_count", 0) == 1:
-            out[coordinate_name(key.expr) + VELOCITY_SUFFIX] = float(v)
-        else:
-            out[coordinate_name(key)] = float(v)
+    out = {state_name(system, key): float(v) for key, v in values.items()}
     unknown = [k for k in out if k not in names]
     if unknown:
         raise SweepError(f"setup returned unknown initial value(s) {', '.join(unknown)} "
