@@ -80,7 +80,7 @@ def given_entries(coords: Sequence, initial: Mapping) -> list[bool]:
     """Which of the 2n entries of ``[q, q̇]`` the dict ``initial`` gives (keys as in :func:`initial_state`)."""
     _, slot_of = _slots(tuple(coords))
     out = [False] * (2 * len(coords))
-    for key in initial:
+    for key in canonical_keys(initial, coords):  # dynamicsymbols and their derivatives, as initial_state takes them
         try:
             idx = slot_of.get(key)
         except TypeError:

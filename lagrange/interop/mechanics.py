@@ -56,6 +56,7 @@ from ..conventions import t
 from ..errors import DeclarationError
 from ..model.constraints import Holonomic, Nonholonomic
 from ..model.coordinates import SYMPY_TIME, coordinate_name, normalize_time
+from ..safe_sympify import lambdify as _lambdify
 from ..safe_sympify import sympify as _sympify
 from ..simplification import is_zero, simplify
 
@@ -289,7 +290,7 @@ def _implied_by_configuration(rows, hol, q, qd) -> list[bool]:
         return [False] * len(rows)
     args = sorted(everything.free_symbols - set(vs), key=sp.default_sort_key)
     try:
-        f = sp.lambdify(args, everything, "numpy", cse=True)
+        f = _lambdify(args, everything, "numpy", cse=True)
     except (TypeError, ValueError, NameError, AttributeError):
         return [False] * len(rows)  # not evaluable: every row is kept (a row is dropped only when shown implied)
     rng = np.random.default_rng(11)
@@ -382,7 +383,7 @@ def _zero_at_random_points(r) -> bool | None:
     rng = np.random.default_rng(7)
     good = 0
     try:
-        f = sp.lambdify(args, list(sp.Add.make_args(r)), "numpy", cse=True)
+        f = _lambdify(args, list(sp.Add.make_args(r)), "numpy", cse=True)
         for _ in range(4 * _POINTS):
             with np.errstate(all="ignore"):
                 terms = np.array(f(*rng.uniform(0.2, 1.3, len(args))), dtype=complex)
