@@ -45,7 +45,6 @@ Backends that need an analytic, closed right-hand side refuse equations with int
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
 import numpy as np
 import sympy as sp
@@ -53,6 +52,7 @@ from sympy.printing.numpy import NumPyPrinter
 from sympy.printing.pycode import PythonCodePrinter
 
 from ..errors import OptionError
+from ..records import record
 
 __all__ = ["Rule", "DEFAULT_RULE", "QuadratureGroup", "split_integrals", "quadrature_lines", "has_integrals"]
 
@@ -62,7 +62,7 @@ MAX_ORDER = 64
 MAX_PANELS = 64
 
 
-@dataclass(frozen=True, slots=True)
+@record(frozen=True, slots=True)
 class Rule:
     """A composite Gauss–Legendre rule: ``panels`` equal panels per integration variable, ``order`` nodes in
     each. Raises :class:`~lagrange.errors.OptionError` for a value out of range."""
@@ -93,7 +93,7 @@ class Rule:
 DEFAULT_RULE = Rule(order=8, panels=8)
 
 
-@dataclass(frozen=True, slots=True)
+@record(frozen=True, slots=True)
 class QuadratureGroup:
     """Integrals over the same limits: ``limits`` ((variable, lower, upper), innermost first, the variables
     renamed ``qv{g}_{d}``), ``integrands`` and the placeholder ``symbols`` standing for their values."""
