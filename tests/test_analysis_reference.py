@@ -150,3 +150,18 @@ def test_bad_starting_points_are_refused_by_name():
             linearize(s, params=SPRING, near={"r": bad})
     with pytest.raises(AnalysisError, match=r"z is not a coordinate or constraint name \(valid: r, theta\)"):
         linearize(s, params=SPRING, near={"z": 1.0})
+
+
+def test_a_time_dependent_drive_is_the_linear_models_forcing_not_part_of_the_statics():
+    """A spring-mass driven by A sin ωt (Wells §1.9): without a point, symbolic linearization uses the equilibrium
+    of the undriven system, q = 0, and keeps the drive as the forcing; a constant load is part of the statics:
+    q = 0 is then no equilibrium, and the static deflection F0/k is found."""
+    x = coordinates("x")
+    m, k, A, w, F0 = parameters("m k A omega F0")
+    driven = System([x], T=m * x.diff(t) ** 2 / 2, V=k * x**2 / 2, forces={x: A * sp.sin(w * t)})
+    lin = linearize(driven)
+    assert lin.about[x] == 0 and "without its time-dependent drive" in lin.reference
+    assert sp.simplify(lin.c[0, 0] - k) == 0 and sp.simplify(lin.a[0, 0] - m) == 0
+    loaded = System([x], T=m * x.diff(t) ** 2 / 2, V=k * x**2 / 2, forces={x: F0 + A * sp.sin(w * t)})
+    lin = linearize(loaded)
+    assert sp.simplify(lin.about[x] - F0 / k) == 0

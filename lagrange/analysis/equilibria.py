@@ -85,7 +85,8 @@ def equilibrium_equations(system) -> list:
 
 
 @bounded("equilibria")
-def equilibria(system, params: Mapping | None = None, guess: Mapping | None = None, *, symbolic: bool = True):
+def equilibria(system, params: Mapping | None = None, guess: Mapping | None = None, *, symbolic: bool = True,
+               without_drive: bool = False):
     """Static equilibria, with the constraint forces for a constrained system.
 
     With ``params is None`` and ``symbolic`` the conditions are solved with sympy: a list of
@@ -94,11 +95,17 @@ def equilibria(system, params: Mapping | None = None, guess: Mapping | None = No
     ``guess`` (coordinate values and optionally multipliers by constraint name; default 0), returning one
     :class:`Equilibrium` with float values.
 
+    ``without_drive`` (symbolic only): the terms of the conditions that depend on t explicitly (a drive
+    ``A sin ωt``) are left out, giving the equilibria of the undriven system about which the driven one is
+    linearized.
+
     Raises :class:`~lagrange.errors.LagrangeError` when the root finder does not converge or the conditions
     are singular at the guess, and :class:`~lagrange.errors.AnalysisError` for rough or moving constraints.
     """
     eqs = system.derived
     conds, unknowns = _conditions(system)
+    if without_drive and params is None and symbolic:
+        conds = [sp.Add(*[a for a in sp.Add.make_args(sp.expand(c)) if not a.has(t)]) for c in conds]
     names = dict(zip(eqs.multipliers, eqs.constraint_names))
     if params is None and symbolic:
         sols = solve(conds, unknowns, dict=True, what="the equilibrium conditions")

@@ -27,6 +27,7 @@ from collections.abc import Callable, Mapping
 import numpy as np
 import sympy as sp
 
+from ..conventions import t
 from ..errors import AnalysisError, LagrangeError
 from ..model.coordinates import coordinate_name, position_symbol
 from ..records import record
@@ -150,14 +151,18 @@ def symbolic_choice(system, u0: Mapping, stability: Callable[[Mapping, Mapping],
     rest = {v: 0 for v in eqs.qd}
     at0 = {**rest, **{s: 0 for s in eqs.q}, **{u: u0.get(u, 0) for u in getattr(eqs, "inputs", ())}}
     f0 = [_sympify(e).xreplace(at0) for e in eqs.forcing]
+    driven = any(e.has(t) for e in f0)
+    if driven:  # a time-dependent drive (A sin ωt) is the forcing of the linear model, not part of the statics
+        f0 = [sp.Add(*[a for a in sp.Add.make_args(sp.expand(e)) if not a.has(t)]) for e in f0]
     if all(is_zero(e) for e in f0):
         zero = Equilibrium({q: sp.S.Zero for q in system.coordinates})
-        return ReferenceChoice(zero, (zero,), (None,), "q = 0 is an equilibrium")
+        return ReferenceChoice(zero, (zero,), (None,), "q = 0 is an equilibrium"
+                               + (" (of the system without its time-dependent drive)" if driven else ""))
     shown = point_text({q: 0 for q in system.coordinates})
     residual = ", ".join(f"{coordinate_name(q)}: {simplify(-e)}" for q, e in zip(system.coordinates, f0))
     refuse = (f"q = 0 ({shown}) is not an equilibrium (∂V/∂q − F_q there: {residual})")
     try:
-        sols = equilibria(system)
+        sols = equilibria(system, without_drive=driven)
     except LagrangeError as exc:
         raise AnalysisError(f"{refuse} and the equilibrium conditions could not be solved symbolically ({exc}): "
                             "pass `about=` (an equilibrium), or `params=` to search numerically") from None
