@@ -524,6 +524,8 @@ def _sweep_table(args, over: dict, common: dict):
 
 
 def _cmd_bench(args) -> int:
+    if args.hard:
+        return _cmd_bench_hard(args)
     from .bench.problems import PROBLEMS
     from .bench.suite import run_suite
 
@@ -532,6 +534,21 @@ def _cmd_bench(args) -> int:
         raise SpecError(f"--problem {', '.join(unknown)}: unknown benchmark problem (choose from "
                         f"{', '.join(PROBLEMS)})")
     run_suite(args.problem, quick=args.quick, out=args.out, heyoka=not args.no_heyoka)
+    return 0
+
+
+def _cmd_bench_hard(args) -> int:
+    from .bench.hard import HARD_PROBLEMS, render_hard_markdown, run_hard_suite, write_hard_report
+
+    unknown = [p for p in args.problem or [] if p not in HARD_PROBLEMS]
+    if unknown:
+        raise SpecError(f"--problem {', '.join(unknown)}: unknown hard case (choose from {', '.join(HARD_PROBLEMS)})")
+    runs = run_hard_suite(args.problem, quick=args.quick, log=None if args.quiet else print)
+    if args.out:
+        paths = write_hard_report(runs, args.out, quick=args.quick)
+        print(f"wrote {paths['md']} and {len(paths['png'])} PNG(s)")
+    else:
+        print(render_hard_markdown(runs, quick=args.quick))
     return 0
 
 
@@ -921,6 +938,9 @@ def _parser() -> argparse.ArgumentParser:
     p.add_argument("--quick", action="store_true", help="short runs, two tolerances, python backend (a few minutes)")
     p.add_argument("--out", help="write workprecision.md, .json and one PNG per problem into this directory")
     p.add_argument("--no-heyoka", action="store_true", help="skip the heyoka.py comparison even if installed")
+    p.add_argument("--hard", action="store_true",
+                   help="the hard cases instead (squeezer, car_axis, double_pendulum, kepler, cone, stick_slip, "
+                        "spherical_pole): every method, error, CPU, drift and each run's own verdict")
     p.add_argument("-q", "--quiet", action="store_true", help="no progress reports")
     p.set_defaults(func=_cmd_bench)
 

@@ -6,7 +6,9 @@
 * :mod:`~lagrange.bench.first_result` — time to first result, cold, in fresh processes;
 * :mod:`~lagrange.bench.sympy_route`, :mod:`~lagrange.bench.heyoka_adapter` — the peers compared;
 * :mod:`~lagrange.bench.report`, :mod:`~lagrange.bench.suite` — Markdown/JSON/PNG report;
-* :mod:`~lagrange.bench.horizon` — :func:`validity_horizon` and the finite-time Lyapunov exponent.
+* :mod:`~lagrange.bench.horizon` — :func:`validity_horizon` and the finite-time Lyapunov exponent;
+* :mod:`~lagrange.bench.hard` — the hard cases (``lagrange bench --hard``): every method against an independent
+  reference, with each run's own verdict and the runs that are silently wrong.
 """
 
 from .horizon import ValidityHorizon, validity_horizon
