@@ -121,6 +121,8 @@ class _Expired(BaseException):
 
 
 _local = threading.local()
+#: signals held back while a timed stage cleans up (POSIX, where the timer is used at all)
+_HELD = {getattr(signal, n) for n in ("SIGPROF", "SIGALRM", "SIGINT") if hasattr(signal, n)}
 _previous_handler: list = []  # the SIGPROF handler to restore when the outermost timed stage ends
 
 
@@ -148,7 +150,7 @@ def _can_time() -> bool:
     """The CPU timer is ours to use: the main thread of a POSIX process, no SIGPROF timer or handler of a caller."""
     if not hasattr(signal, "setitimer") or threading.current_thread() is not threading.main_thread():
         return False
-    if _previous_handler:  # an outer stage of ours holds it
+    if _previous_handler or signal.getsignal(signal.SIGPROF) is _expire:  # ours: an outer stage holds it
         return True
     return signal.getitimer(signal.ITIMER_PROF)[0] == 0.0 and signal.getsignal(signal.SIGPROF) in (
         signal.SIG_DFL, signal.SIG_IGN, None)
@@ -174,7 +176,7 @@ def stage(what: str, *, timeout=None, budget=None) -> Iterator[None]:
         nodes = nodes if budget is not None else s[-1].nodes
     timed = math.isfinite(deadline) and _can_time()
     st = _Stage(what, seconds, deadline, nodes, timed)
-    if timed and not _previous_handler:
+    if timed and signal.getsignal(signal.SIGPROF) is not _expire:
         _previous_handler.append(signal.signal(signal.SIGPROF, _expire))
     s.append(st)
     try:
@@ -184,14 +186,21 @@ def stage(what: str, *, timeout=None, budget=None) -> Iterator[None]:
     except _Expired:
         raise SymbolicTimeoutError(_message(st)) from None
     finally:
-        s.pop()
-        if timed:
-            outer = next((o for o in reversed(s) if o.timed), None)
-            if outer is not None and math.isfinite(outer.deadline):
-                _arm(outer.deadline)
-            else:
-                signal.setitimer(signal.ITIMER_PROF, 0)
-                signal.signal(signal.SIGPROF, _previous_handler.pop())
+        # the clean-up runs with the timer's and the caller's signals held back: a handler that raises (ours, or
+        # a test's SIGALRM) must not cut it short and leave the timer or its handler behind
+        held = signal.pthread_sigmask(signal.SIG_BLOCK, _HELD) if timed else None
+        try:
+            s.pop()
+            if timed:
+                outer = next((o for o in reversed(s) if o.timed), None)
+                if outer is not None and math.isfinite(outer.deadline):
+                    _arm(outer.deadline)
+                else:
+                    signal.setitimer(signal.ITIMER_PROF, 0)
+                    signal.signal(signal.SIGPROF, _previous_handler.pop() if _previous_handler else signal.SIG_DFL)
+        finally:
+            if held is not None:
+                signal.pthread_sigmask(signal.SIG_SETMASK, held)
 
 
 def checkpoint() -> None:
