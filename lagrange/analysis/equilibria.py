@@ -85,6 +85,12 @@ def equilibrium_equations(system) -> list:
 
 
 @bounded("equilibria")
+def without_drive_terms(expr):
+    """``expr`` expanded, without its terms that depend on t explicitly (a drive ``A sin ωt``): the statics of
+    a driven system."""
+    return sp.Add(*[a for a in sp.Add.make_args(sp.expand(expr)) if not a.has(t)])
+
+
 def equilibria(system, params: Mapping | None = None, guess: Mapping | None = None, *, symbolic: bool = True,
                without_drive: bool = False):
     """Static equilibria, with the constraint forces for a constrained system.
@@ -105,7 +111,7 @@ def equilibria(system, params: Mapping | None = None, guess: Mapping | None = No
     eqs = system.derived
     conds, unknowns = _conditions(system)
     if without_drive and params is None and symbolic:
-        conds = [sp.Add(*[a for a in sp.Add.make_args(sp.expand(c)) if not a.has(t)]) for c in conds]
+        conds = [without_drive_terms(c) for c in conds]
     names = dict(zip(eqs.multipliers, eqs.constraint_names))
     if params is None and symbolic:
         sols = solve(conds, unknowns, dict=True, what="the equilibrium conditions")

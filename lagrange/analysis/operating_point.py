@@ -33,7 +33,7 @@ from ..model.coordinates import coordinate_name, position_symbol
 from ..records import record
 from ..safe_sympify import sympify as _sympify
 from ..simplification import is_zero, simplify
-from .equilibria import MAX_STARTS, Equilibrium, equilibria, equilibria_near
+from .equilibria import MAX_STARTS, Equilibrium, equilibria, equilibria_near, without_drive_terms
 
 __all__ = ["ReferenceChoice", "numeric_choice", "symbolic_choice", "point_text"]
 
@@ -153,7 +153,7 @@ def symbolic_choice(system, u0: Mapping, stability: Callable[[Mapping, Mapping],
     f0 = [_sympify(e).xreplace(at0) for e in eqs.forcing]
     driven = any(e.has(t) for e in f0)
     if driven:  # a time-dependent drive (A sin ωt) is the forcing of the linear model, not part of the statics
-        f0 = [sp.Add(*[a for a in sp.Add.make_args(sp.expand(e)) if not a.has(t)]) for e in f0]
+        f0 = [without_drive_terms(e) for e in f0]
     if all(is_zero(e) for e in f0):
         zero = Equilibrium({q: sp.S.Zero for q in system.coordinates})
         return ReferenceChoice(zero, (zero,), (None,), "q = 0 is an equilibrium"
